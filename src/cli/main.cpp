@@ -1,0 +1,58 @@
+// granseg: command-line entry point. `granseg --help` lists the subcommands,
+// `granseg COMMAND --help` explains one.
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+
+#include <exception>
+#include <iostream>
+
+namespace granseg::cli {
+
+const std::vector<Command>& commands() {
+    static const std::vector<Command> table = {
+        {"closures", "print the Sect. 2.1 closures at one state (Phi, phi_hat, T)", closures_main},
+        {"run", "run a scene file (TOML); `granseg run --help` lists the scene kinds", run_main},
+    };
+    return table;
+}
+
+}  // namespace granseg::cli
+
+namespace {
+
+void print_help() {
+    std::cout << "granseg: reference code for 'Size segregation in compressible granular shear flows\n"
+                 "of binary particle systems' (Gilberg, Klar & Steiner, Granular Matter 22, 45, 2020).\n\n"
+                 "usage: granseg COMMAND [options]    (granseg COMMAND --help for its options)\n\n"
+                 "commands:\n";
+    for (const auto& c : granseg::cli::commands()) {
+        std::string name = c.name;
+        name.resize(12, ' ');
+        std::cout << "  " << name << c.summary << '\n';
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace granseg;
+    const std::vector<std::string> words(argv + 1, argv + argc);
+    if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
+        print_help();
+        return words.empty() ? kExitBadInput : kExitOk;
+    }
+    try {
+        for (const auto& c : cli::commands())
+            if (words[0] == c.name) return c.main(std::vector<std::string>(words.begin() + 1, words.end()));
+        throw InputError("granseg: unknown command \"" + words[0] + "\" (see granseg --help)");
+    } catch (const InputError& e) {
+        std::cerr << e.what() << '\n';
+        return kExitBadInput;
+    } catch (const InvariantError& e) {
+        std::cerr << "granseg: stopped, invariant broken: " << e.what() << '\n';
+        return kExitInvariant;
+    } catch (const std::exception& e) {
+        std::cerr << "granseg: error: " << e.what() << '\n';
+        return kExitFailure;
+    }
+}

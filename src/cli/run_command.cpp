@@ -1,0 +1,27 @@
+// granseg run SCENE.toml [--output-dir DIR]
+// Validates and runs a scene file; outputs go below [output] dir (or DIR).
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "scenes/scene_kind.hpp"
+
+#include <iostream>
+
+namespace granseg::cli {
+
+int run_main(const std::vector<std::string>& args) {
+    std::string scene, output_dir;
+    po::options_description desc("options");
+    desc.add_options()
+        ("scene", po::value<std::string>(&scene)->required(), "the scene file (TOML), see docs/scenes.md")
+        ("output-dir", po::value<std::string>(&output_dir), "write outputs here instead of [output] dir");
+    po::positional_options_description positional;
+    positional.add("scene", 1);
+    std::string usage = "SCENE.toml [--output-dir DIR]\n\nscene kinds ([scene] kind):\n";
+    for (const auto& kind : scene_kinds()) usage += "  " + kind.name + ": " + kind.summary + "\n";
+    po::variables_map vm;
+    if (!parse_options("run", usage, args, desc, positional, vm)) return 0;
+    for (const auto& file : run_scene_file(scene, output_dir)) std::cout << "wrote " << file << '\n';
+    return 0;
+}
+
+}  // namespace granseg::cli

@@ -1,0 +1,60 @@
+// Closures of the Latz-Schmidt granular flow model (Sect. 2.1, eqs. 15-20).
+//
+// Symbols (docs/notation.md): Phi granular volume fraction, phi_hat = phi/Phi small-particle
+// share, T granular temperature, g compressibility factor, p = p_k + p_y pressure, eta viscosity,
+// lambda conductivity, eps dissipation rate. With s = Theta(Phi - Phi_co) the yield factor (eq. 20)
+// is 1 + p_y/p_k = 1 + s T0 (Phi - Phi_co) / (Phi T), so the coefficients are written expanded:
+//
+//   eta    = eta0    g (Phi sqrt(T) + s T0 (Phi - Phi_co) / sqrt(T))
+//   lambda = lambda0 g (Phi sqrt(T) + s T0 (Phi - Phi_co) / sqrt(T))
+//   eps    = eps0    g (sqrt(T)     + s T0 (Phi - Phi_co) / (Phi sqrt(T)))
+//   eps Phi T = eps0 g sqrt(T) (Phi T + s T0 (Phi - Phi_co))          (finite as T -> 0)
+//
+// No 0/0 appears: below Phi_co the yield terms are skipped, so everything vanishes with T.
+// Above Phi_co, eta, lambda and eps grow like T^(-1/2) and are +inf at T = 0 (the flow solver keeps
+// T above a floor); the dissipation eps Phi T still goes to 0 like sqrt(T).
+// Preconditions: 0 <= Phi, T >= 0. For Phi >= Phi_rcp, g is +inf (the packing limit is a wall).
+#pragma once
+
+#include "closures/material.hpp"
+
+namespace granseg {
+
+/// Compressibility factor g(Phi; Phi_rcp), the substitute for the lost eq. (18): g -> 1 as
+/// Phi -> 0 and g -> inf as Phi -> Phi_rcp (docs/assumptions.md A1). +inf for Phi >= Phi_rcp.
+double compressibility_factor(const Material& m, double Phi, double Phi_rcp);
+
+/// dg/dPhi at fixed Phi_rcp (for the sound speed).
+double compressibility_factor_slope(const Material& m, double Phi, double Phi_rcp);
+
+/// Kinetic pressure p_k = Phi g T (eq. 16).
+inline double kinetic_pressure(double Phi, double g, double T) { return Phi * g * T; }
+
+/// p_y / g = Theta(Phi - Phi_co) T0 (Phi - Phi_co): the yield pressure of eq. (19) without g.
+inline double yield_excess(double T0, double Phi, double Phi_co) {
+    return Phi > Phi_co ? T0 * (Phi - Phi_co) : 0.0;  // the Heaviside switch of eq. (19)
+}
+
+/// Yield pressure p_y = Theta(Phi - Phi_co) T0 (Phi - Phi_co) g (eq. 19).
+inline double yield_pressure(double T0, double Phi, double Phi_co, double g) {
+    return yield_excess(T0, Phi, Phi_co) * g;
+}
+
+/// Every closure at one state (Phi, phi_hat, T).
+struct ClosureValues {
+    double Phi_rcp, Phi_co;  // packing limits at phi_hat
+    double g;                // compressibility factor (eq. 18 substitute)
+    double p_k, p_y, p;      // pressures (eqs. 16, 19, 15)
+    double eta, lambda, eps; // transport coefficients (eqs. 17, 20)
+    double dissipation;      // eps Phi T, the sink of eq. (14)
+    double c2;               // dp/dPhi at fixed T and phi_hat: squared sound speed of eqs. (8)-(9)
+};
+
+/// Evaluates eqs. (15)-(20) at (Phi, phi_hat, T) for material m.
+ClosureValues evaluate_closures(const Material& m, double Phi, double phi_hat, double T);
+
+/// Granular temperature of steady homogeneous shear at shear rate gamma_dot, eq. (45) solved
+/// for T: T = (3/2) (eta0/eps0) gamma_dot^2.
+double steady_shear_temperature(const Material& m, double gamma_dot);
+
+}  // namespace granseg

@@ -1,0 +1,30 @@
+// Error types shared by the library, the CLI and the verification programs.
+//
+// InputError:     a scene file or a command-line argument is wrong. The message is the single
+//                 line the user sees, e.g. "scene.toml: [grid] cells: ... (allowed: ...)".
+//                 The CLI prints it and exits with status 2 before writing any output.
+// InvariantError: a running simulation broke one of its invariants (mass, bounds, finite
+//                 fields). The CLI prints it and exits with status 3; no output is written.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace granseg {
+
+/// Bad user input (scene file, CLI argument); exit status 2.
+class InputError : public std::runtime_error {
+public:
+    explicit InputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// A simulation invariant failed while running; exit status 3.
+class InvariantError : public std::runtime_error {
+public:
+    explicit InvariantError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// Exit statuses used by every executable of the project.
+enum ExitStatus : int { kExitOk = 0, kExitFailure = 1, kExitBadInput = 2, kExitInvariant = 3 };
+
+}  // namespace granseg

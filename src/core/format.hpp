@@ -1,0 +1,16 @@
+// Number formatting for messages and `name = value` output.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+namespace granseg {
+
+/// v in %g style with `digits` significant digits ("nan", "inf" for non-finite values).
+inline std::string format_number(double v, int digits = 6) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
+
+}  // namespace granseg

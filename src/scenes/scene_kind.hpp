@@ -1,0 +1,44 @@
+// Scene kinds and the `granseg run` driver.
+//
+// Running a scene file has three phases, in this order:
+//   1. prepare: the kind reads and validates every key it needs (SceneFile accessors) and any
+//      cross-key condition (phi <= Phi on the grid, ...), computing nothing expensive;
+//   2. the driver calls SceneFile::finish(), rejecting keys nobody asked for;
+//   3. run: the job computes and returns its files; the driver writes them all at the end.
+// So bad input never produces output, and a run that throws (InvariantError) leaves none either.
+// A new scene kind adds one row to scene_kinds() in registry.cpp and a section to docs/scenes.md.
+#pragma once
+
+#include "core/output.hpp"
+#include "core/scene_file.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace granseg {
+
+/// A validated scene, ready to run.
+class SceneJob {
+public:
+    virtual ~SceneJob() = default;
+    /// Computes the scene; returns files with paths relative to the output directory.
+    virtual OutputSet run() = 0;
+};
+
+struct SceneKind {
+    std::string name;     // value of [scene] kind
+    std::string summary;  // one line for `granseg run --help`
+    std::function<std::unique_ptr<SceneJob>(const SceneFile&)> prepare;
+};
+
+/// Every scene kind, in the order `granseg run --help` lists them.
+const std::vector<SceneKind>& scene_kinds();
+
+/// Loads, validates and runs the scene file at `path`, then writes its outputs below
+/// `output_dir` if given, else below [output] dir of the file. Returns the files written.
+/// Throws InputError (bad input) or InvariantError (broken invariant) before writing anything.
+std::vector<std::string> run_scene_file(const std::string& path, const std::string& output_dir = "");
+
+}  // namespace granseg

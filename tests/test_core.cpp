@@ -1,0 +1,50 @@
+// Core utilities: data tables, atomic output, the grid.
+#include "core/grid.hpp"
+#include "core/output.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace granseg;
+
+BOOST_AUTO_TEST_SUITE(core)
+
+BOOST_AUTO_TEST_CASE(data_table_names_its_columns_first) {
+    DataTable t({"z", "phi"});
+    t.comment("source: test");
+    t.row({0.5, 0.25});
+    BOOST_TEST(t.str() == "# z phi\n# source: test\n0.5 0.25\n");
+    BOOST_CHECK_THROW(t.row({1.0}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(atomic_write_creates_directories_and_leaves_no_temporary) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("granseg_core_" + std::to_string(::getpid()));
+    write_file_atomically((dir / "a" / "b.dat").string(), "x\n");
+    std::ifstream in(dir / "a" / "b.dat");
+    std::string line;
+    std::getline(in, line);
+    BOOST_TEST(line == "x");
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir / "a")) files += e.is_regular_file();
+    BOOST_TEST(files == 1);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(grid_indexing_and_geometry) {
+    const Grid g = Grid::plane_xz(4, 3, -1.0, 0.0, 2.0, 3.0);
+    BOOST_TEST(g.cells() == 12u);
+    BOOST_TEST(g.index(1, 0, 2) == 9u);
+    BOOST_TEST(g.stride(2) == 4u);
+    BOOST_TEST(g.center(0, 0) == -0.75);
+    BOOST_TEST(g.center(2, 2) == 2.5);
+    BOOST_TEST(g.is_inside(5));
+    const Grid c = Grid::column(50, 1.0);
+    BOOST_TEST(c.h[2] == 0.02);
+    BOOST_TEST(c.stride(2) == 1u);
+    BOOST_CHECK_THROW(Grid::column(0, 1.0), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
