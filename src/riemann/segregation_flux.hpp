@@ -1,0 +1,45 @@
+// The segregation flux of Sect. 3 and the interface fluxes built from it.
+//
+// Per direction the flux of small particles is f(phi; Phi, a) = a phi (phi - Phi)/Phi
+// (eqs. 49 and 66 with a = S sqrt(T); in more dimensions a = (S^sl)_k, eq. 47 moved to the
+// left-hand side). For a > 0 it is convex with its minimum a(-Phi/4) at phi = Phi/2, the
+// transition curve Gamma (eq. 59); for a < 0 it is concave. f vanishes at phi = 0 and phi = Phi.
+//
+// The interface flux between a left cell (phi_L, Phi_L, a_L) and a right cell (phi_R, Phi_R, a_R):
+//   a_L, a_R >= 0: F = max(f_L(max(phi_L, Phi_L/2)), f_R(min(phi_R, Phi_R/2)))  eqs. (61)-(63)
+//   a_L, a_R <= 0: F = min(f_L(min(phi_L, Phi_L/2)), f_R(max(phi_R, Phi_R/2)))  concave mirror
+//   a_L a_R < 0:   F = 0, the only value both flux curves share on [0, Phi]
+// (docs/assumptions.md S1; the concave form is not minus eq. (63): left and right swap roles).
+// The classic fluxes the paper compares with use ONE flux function, with interface values
+// Phi_face and a_face, and so ignore condition (51).
+#pragma once
+
+namespace granseg {
+
+/// f(phi; Phi, a) = a phi (phi - Phi)/Phi (eqs. 49, 66); 0 where there is no material (Phi <= 0).
+inline double segregation_flux(double phi, double Phi, double a) {
+    return Phi > 0.0 ? a * phi * (phi - Phi) / Phi : 0.0;
+}
+
+/// df/dphi = a (2 phi/Phi - 1), the eigenvalue lambda_1 of eq. (55).
+inline double segregation_speed(double phi, double Phi, double a) {
+    return Phi > 0.0 ? a * (2.0 * phi / Phi - 1.0) : 0.0;
+}
+
+/// One side of a cell interface: small-particle fraction, granular fraction, flux coefficient.
+struct FluxSide {
+    double phi, Phi, a;
+};
+
+/// Modified Godunov flux, eqs. (61)-(63), extended to coefficients of any sign (see above).
+double modified_godunov_flux(const FluxSide& L, const FluxSide& R);
+
+/// Classic upwind (Murman-Roe) flux of the single function f(.; Phi_face, a_face): f(phi_L) if
+/// the Rankine-Hugoniot speed of (phi_L, phi_R) is >= 0, else f(phi_R).
+double classic_upwind_flux(double phi_L, double phi_R, double Phi_face, double a_face);
+
+/// Classic Godunov flux of the single function f(.; Phi_face, a_face): the minimum of f over
+/// [phi_L, phi_R] if phi_L <= phi_R, else its maximum over [phi_R, phi_L].
+double classic_godunov_flux(double phi_L, double phi_R, double Phi_face, double a_face);
+
+}  // namespace granseg
