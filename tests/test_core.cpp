@@ -45,6 +45,13 @@ BOOST_AUTO_TEST_CASE(grid_indexing_and_geometry) {
     BOOST_TEST(c.h[2] == 0.02);
     BOOST_TEST(c.stride(2) == 1u);
     BOOST_CHECK_THROW(Grid::column(0, 1.0), std::invalid_argument);
+    // Faces: 5 x 1 x 3 normal to x, 4 x 1 x 4 normal to z; upper face = lower face + stride.
+    BOOST_TEST(g.faces(0) == 15u);
+    BOOST_TEST(g.faces(2) == 16u);
+    BOOST_TEST(g.face_index(0, 4, 0, 2) == 14u);
+    BOOST_TEST(g.face_index(2, 3, 0, 3) == 15u);
+    BOOST_TEST(g.face_index(2, 1, 0, 1) + g.face_stride(2) == g.face_index(2, 1, 0, 2));
+    BOOST_TEST(g.face_index(0, 1, 0, 1) + g.face_stride(0) == g.face_index(0, 2, 0, 1));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,6 +8,10 @@
 // Cell (i, j, k) has linear index i + nx*(j + ny*k); fields are std::vector<double> in that order.
 // Embedded walls: a cell whose `inside` flag is 0 holds no material; faces between an inside
 // and an outside cell, and faces on a non-periodic domain boundary, are walls.
+// Face fields (fluxes): the faces normal to `axis` form a grid with n[axis] + 1 layers along that
+// axis; face_index(axis, i, j, k) is the lower face of cell (i, j, k) along `axis` and the upper
+// face is the lower face of the next cell (index + face_stride(axis)). On a periodic axis the
+// last layer is the same physical face as the first and must hold the same value.
 #pragma once
 
 #include <array>
@@ -39,6 +43,17 @@ struct Grid {
         return axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(n[0]) : static_cast<std::size_t>(n[0]) * n[1];
     }
     bool is_inside(std::size_t cell) const { return inside.empty() || inside[cell] != 0; }
+    /// Number of faces normal to `axis`.
+    std::size_t faces(int axis) const { return cells() / n[axis] * (n[axis] + 1); }
+    /// Index of the lower face along `axis` of cell (i, j, k) in a face field of that axis.
+    std::size_t face_index(int axis, int i, int j, int k) const {
+        const std::size_t m0 = n[0] + (axis == 0), m1 = n[1] + (axis == 1);
+        return static_cast<std::size_t>(i) + m0 * (j + m1 * static_cast<std::size_t>(k));
+    }
+    /// Step in a face field of `axis` from the lower to the upper face of a cell.
+    std::size_t face_stride(int axis) const {
+        return axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(n[0]) : static_cast<std::size_t>(n[0]) * (n[1]);
+    }
     /// Volume of one cell (h_x h_y h_z).
     double cell_volume() const { return h[0] * h[1] * h[2]; }
 };
