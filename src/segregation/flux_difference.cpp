@@ -1,0 +1,34 @@
+#include "segregation/flux_difference.hpp"
+
+namespace granseg {
+
+void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt,
+                           std::vector<double>& u) {
+    const double ratio = dt / grid.h[axis];
+    const std::size_t up = grid.face_stride(axis);
+    for (int k = 0; k < grid.n[2]; ++k)
+        for (int j = 0; j < grid.n[1]; ++j)
+            for (int i = 0; i < grid.n[0]; ++i) {
+                const std::size_t cell = grid.index(i, j, k);
+                if (!grid.is_inside(cell)) continue;
+                const std::size_t lower = grid.face_index(axis, i, j, k);
+                // (eq. 64), written so that each face moves the same rounded amount ratio*F out of one
+                // cell and into the other: the sum over cells is conserved to round-off.
+                u[cell] = (u[cell] + ratio * F[lower]) - ratio * F[lower + up];
+            }
+}
+
+std::vector<double> arithmetic_mean_faces(const Grid& grid, int axis, const std::vector<double>& u) {
+    std::vector<double> mean(grid.faces(axis), 0.0);
+    for_each_face(grid, axis, [&](const FaceCells& f) {
+        const bool has_lower = f.lower != kNoCell && grid.is_inside(f.lower);
+        const bool has_upper = f.upper != kNoCell && grid.is_inside(f.upper);
+        if (has_lower && has_upper)
+            mean[f.face] = 0.5 * (u[f.lower] + u[f.upper]);
+        else if (has_lower || has_upper)
+            mean[f.face] = u[has_lower ? f.lower : f.upper];
+    });
+    return mean;
+}
+
+}  // namespace granseg
