@@ -5,17 +5,17 @@ namespace granseg {
 void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt,
                            std::vector<double>& u) {
     const double ratio = dt / grid.h[axis];
-    const std::size_t up = grid.face_stride(axis);
-    for (int k = 0; k < grid.n[2]; ++k)
-        for (int j = 0; j < grid.n[1]; ++j)
-            for (int i = 0; i < grid.n[0]; ++i) {
-                const std::size_t cell = grid.index(i, j, k);
-                if (!grid.is_inside(cell)) continue;
-                const std::size_t lower = grid.face_index(axis, i, j, k);
-                // (eq. 64), written so that each face moves the same rounded amount ratio*F out of one
-                // cell and into the other: the sum over cells is conserved to round-off.
-                u[cell] = (u[cell] + ratio * F[lower]) - ratio * F[lower + up];
-            }
+    const std::size_t n = static_cast<std::size_t>(grid.n[axis]);
+    const std::size_t stride = grid.stride(axis), face_stride = grid.face_stride(axis);
+    for_each_line(grid, axis, [&](std::size_t cell0, std::size_t face0) {
+        for (std::size_t l = 0; l < n; ++l) {
+            const std::size_t cell = cell0 + l * stride, lower = face0 + l * face_stride;
+            if (!grid.is_inside(cell)) continue;
+            // (eq. 64), written so that each face moves the same rounded amount ratio*F out of one
+            // cell and into the other: the sum over cells is conserved to round-off.
+            u[cell] = (u[cell] + ratio * F[lower]) - ratio * F[lower + face_stride];
+        }
+    });
 }
 
 std::vector<double> arithmetic_mean_faces(const Grid& grid, int axis, const std::vector<double>& u) {

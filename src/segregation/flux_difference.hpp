@@ -37,30 +37,35 @@ inline bool is_open_face(const Grid& grid, const FaceCells& f) {
     return f.lower != kNoCell && f.upper != kNoCell && grid.is_inside(f.lower) && grid.is_inside(f.upper);
 }
 
-/// Calls visit(FaceCells) for every face normal to `axis`, in face-index order. On a periodic
-/// axis the first and last layer are the same physical face and both get the wrapped cells.
+/// Calls line(first_cell, first_face) for every line of cells along `axis`: the cell and the
+/// face with axis coordinate 0; the next ones follow at grid.stride(axis), grid.face_stride(axis).
+template <class Line>
+void for_each_line(const Grid& grid, int axis, Line&& line) {
+    const int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;  // the two other axes
+    std::array<int, 3> c{0, 0, 0};
+    for (c[b] = 0; c[b] < grid.n[b]; ++c[b])
+        for (c[a] = 0; c[a] < grid.n[a]; ++c[a]) {
+            c[axis] = 0;
+            line(grid.index(c[0], c[1], c[2]), grid.face_index(axis, c[0], c[1], c[2]));
+        }
+}
+
+/// Calls visit(FaceCells) for every face normal to `axis`, line by line. On a periodic axis the
+/// first and last face layer are the same physical face and both get the wrapped cells.
 template <class Visit>
 void for_each_face(const Grid& grid, int axis, Visit&& visit) {
-    const int n = grid.n[axis];
-    const std::size_t stride = grid.stride(axis);
-    std::array<int, 3> c{0, 0, 0}, last = grid.n;
-    last[axis] = n + 1;  // face layers 0..n along the axis
-    for (c[2] = 0; c[2] < last[2]; ++c[2])
-        for (c[1] = 0; c[1] < last[1]; ++c[1])
-            for (c[0] = 0; c[0] < last[0]; ++c[0]) {
-                const int layer = c[axis];
-                std::array<int, 3> cell = c;
-                cell[axis] = layer < n ? layer : 0;
-                const std::size_t first = grid.index(cell[0], cell[1], cell[2]);  // cell `layer` (or 0)
-                std::size_t lower = kNoCell, upper = kNoCell;
-                if (layer > 0) lower = layer < n ? first - stride : first + (n - 1) * stride;
-                if (layer < n) upper = first;
-                if (grid.periodic[axis]) {
-                    if (layer == 0) lower = first + (n - 1) * stride;
-                    if (layer == n) upper = first;
-                }
-                visit(FaceCells{grid.face_index(axis, c[0], c[1], c[2]), lower, upper, grid.periodic[axis] && layer == n});
-            }
+    const std::size_t n = static_cast<std::size_t>(grid.n[axis]);
+    const std::size_t stride = grid.stride(axis), face_stride = grid.face_stride(axis);
+    const bool periodic = grid.periodic[axis];
+    for_each_line(grid, axis, [&](std::size_t cell0, std::size_t face0) {
+        const std::size_t last = cell0 + (n - 1) * stride;
+        visit(FaceCells{face0, periodic ? last : kNoCell, cell0, false});
+        for (std::size_t l = 1; l < n; ++l) {
+            const std::size_t upper = cell0 + l * stride;
+            visit(FaceCells{face0 + l * face_stride, upper - stride, upper, false});
+        }
+        visit(FaceCells{face0 + n * face_stride, last, periodic ? cell0 : kNoCell, periodic});
+    });
 }
 
 /// Eq. (64) along `axis` in every inside cell: u -= dt/h_axis (F[upper face] - F[lower face]).

@@ -1,5 +1,7 @@
 #include "segregation/reconstruction.hpp"
 
+#include "segregation/flux_difference.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,31 +17,28 @@ double limited_slope(double below, double above, Limiter limiter) {
 
 void reconstruct_faces(const Grid& grid, int axis, const std::vector<double>& phi, const std::vector<double>& Phi,
                        Limiter limiter, std::vector<double>& at_lower, std::vector<double>& at_upper) {
-    at_lower.resize(phi.size());
-    at_upper.resize(phi.size());
-    const int n = grid.n[axis];
-    const std::size_t stride = grid.stride(axis);
-    std::array<int, 3> c{0, 0, 0};
-    for (c[2] = 0; c[2] < grid.n[2]; ++c[2])
-        for (c[1] = 0; c[1] < grid.n[1]; ++c[1])
-            for (c[0] = 0; c[0] < grid.n[0]; ++c[0]) {
-                const std::size_t i = grid.index(c[0], c[1], c[2]);
-                at_lower[i] = at_upper[i] = phi[i];
-                if (!grid.is_inside(i) || !(Phi[i] > 0.0)) continue;
-                const int layer = c[axis];
-                const bool wrap = grid.periodic[axis];
-                if (!wrap && (layer == 0 || layer == n - 1)) continue;  // domain wall: first order
-                const std::size_t lo = layer > 0 ? i - stride : i + (n - 1) * stride;
-                const std::size_t hi = layer < n - 1 ? i + stride : i - (n - 1) * stride;
-                if (!grid.is_inside(lo) || !grid.is_inside(hi) || !(Phi[lo] > 0.0) || !(Phi[hi] > 0.0)) continue;
-                const double h_lo = composition(phi[lo], Phi[lo]);
-                const double h_i = composition(phi[i], Phi[i]);
-                const double h_hi = composition(phi[hi], Phi[hi]);
-                const double half = 0.5 * limited_slope(h_i - h_lo, h_hi - h_i, limiter);
-                const double lowest = std::min({h_lo, h_i, h_hi}), highest = std::max({h_lo, h_i, h_hi});
-                at_lower[i] = Phi[i] * std::clamp(h_i - half, lowest, highest);
-                at_upper[i] = Phi[i] * std::clamp(h_i + half, lowest, highest);
-            }
+    at_lower = phi;
+    at_upper = phi;
+    std::vector<double> phi_hat(phi.size());
+    for (std::size_t c = 0; c < phi.size(); ++c) phi_hat[c] = composition(phi[c], Phi[c]);
+    // A cell reconstructs only if it and both neighbours hold material inside the domain.
+    const auto usable = [&](std::size_t c) { return grid.is_inside(c) && Phi[c] > 0.0; };
+    const std::size_t n = static_cast<std::size_t>(grid.n[axis]), stride = grid.stride(axis);
+    const bool periodic = grid.periodic[axis];
+    for_each_line(grid, axis, [&](std::size_t cell0, std::size_t) {
+        for (std::size_t l = 0; l < n; ++l) {
+            if (!periodic && (l == 0 || l == n - 1)) continue;  // next to a domain wall: first order
+            const std::size_t i = cell0 + l * stride;
+            const std::size_t lo = l > 0 ? i - stride : i + (n - 1) * stride;
+            const std::size_t hi = l + 1 < n ? i + stride : cell0;
+            if (!usable(i) || !usable(lo) || !usable(hi)) continue;
+            const double h_lo = phi_hat[lo], h_i = phi_hat[i], h_hi = phi_hat[hi];
+            const double half = 0.5 * limited_slope(h_i - h_lo, h_hi - h_i, limiter);
+            const double lowest = std::min({h_lo, h_i, h_hi}), highest = std::max({h_lo, h_i, h_hi});
+            at_lower[i] = Phi[i] * std::clamp(h_i - half, lowest, highest);
+            at_upper[i] = Phi[i] * std::clamp(h_i + half, lowest, highest);
+        }
+    });
 }
 
 }  // namespace granseg

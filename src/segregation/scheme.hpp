@@ -1,8 +1,9 @@
 // The selectable schemes of the segregation sub-step and their names in scene files.
 //
 //   modified-godunov    eqs. (61)-(63) with each cell's own flux function (default; first order)
-//   modified-godunov-2  the same flux on limited reconstructions of phi_hat = phi/Phi, SSP-RK2
-//                       (second order where the solution is smooth; beyond the paper)
+//   modified-godunov-2  the same flux on limited reconstructions of phi_hat = phi/Phi, with the
+//                       SSP-RK(3,2) method (second order where the solution is smooth; beyond
+//                       the paper)
 //   classic-upwind      one flux function per face with interface values Phi_face, a_face (the
 //   classic-godunov     paper's comparisons in Fig. 6); they ignore condition (51) and overshoot
 #pragma once

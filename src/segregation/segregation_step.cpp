@@ -21,13 +21,15 @@ SegregationSolver::SegregationSolver(Grid grid, SegregationOptions options)
 
 double SegregationSolver::time_step(const FrozenFields& fields) const {
     check_frozen_fields(grid_, fields);
-    const int order = scheme_order(options_.scheme);
+    // Per Euler stage: (stage dt) * (r max|a|/h + 2 D/h^2) <= 1, r = 2 with reconstruction.
+    const bool second = scheme_order(options_.scheme) == 2;
+    const double reconstruction = second ? 2.0 : 1.0, ssp = second ? kSspStages - 1.0 : 1.0;
     double rate = 0.0;  // 1/dt_max
     for (int axis = 0; axis < 3; ++axis) {
         if (fields.a[axis].empty()) continue;
         const double h = grid_.h[axis];
-        rate = std::max(rate, order * max_coefficient(grid_, axis, fields, options_.scheme) / h +
-                                  2.0 * fields.D / (h * h));
+        rate = std::max(rate, (reconstruction * max_coefficient(grid_, axis, fields, options_.scheme) / h +
+                               2.0 * fields.D / (h * h)) / ssp);
     }
     return rate > 0.0 ? options_.cfl / rate : std::numeric_limits<double>::infinity();
 }
@@ -50,14 +52,21 @@ void SegregationSolver::step(const FrozenFields& fields, double dt, std::vector<
         if (fields.a[axis].empty()) continue;
         face_fluxes(fields, axis, phi, F_);
         if (scheme_order(options_.scheme) == 2) {
-            // SSP-RK2: u1 = u0 - dt D(F(u0)), u = (u0 + u1 - dt D(F(u1)))/2, applied as
-            // u = u0 - dt D((F(u0) + F(u1))/2), the same value written in conservative form.
+            // SSP-RK(3,2): u(k) = u(k-1) + dt/2 L(u(k-1)) for k = 1, 2, 3 and u = (u(0) + 2 u(3))/3,
+            // a convex combination of Euler steps of length dt/2. Applied here as
+            // u = u(0) - dt D(mean of the three stage fluxes): the same value in conservative form.
             stage_ = phi;
-            apply_flux_difference(grid_, axis, F_, dt, stage_);
-            face_fluxes(fields, axis, stage_, F_stage_);
-            for (std::size_t f = 0; f < F_.size(); ++f) F_[f] = 0.5 * (F_[f] + F_stage_[f]);
+            F_sum_ = F_;
+            for (int k = 1; k < kSspStages; ++k) {
+                apply_flux_difference(grid_, axis, F_, dt / (kSspStages - 1), stage_);  // (eq. 64)
+                face_fluxes(fields, axis, stage_, F_);
+                for (std::size_t f = 0; f < F_.size(); ++f) F_sum_[f] += F_[f];
+            }
+            for (std::size_t f = 0; f < F_.size(); ++f) F_[f] = F_sum_[f] / kSspStages;
         }
         apply_flux_difference(grid_, axis, F_, dt, phi);  // (eq. 64)
+        for (double& v : phi)  // underflow floor (see the header)
+            if (std::fabs(v) < kUnderflowFloor) v = 0.0;
     }
 }
 

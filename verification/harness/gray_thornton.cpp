@@ -1,0 +1,73 @@
+#include "harness/gray_thornton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace granseg::verify {
+
+PiecewiseLinear homogeneous_batch(double psi0, double q, double t) {
+    if (q * t >= 1.0) return {[psi0](double z) { return z < psi0 ? 1.0 : 0.0; }, {psi0}};
+    const double lower = q * psi0 * t;              // shock speed (F(1) - F(psi0))/(1 - psi0) = q psi0
+    const double upper = 1.0 - q * (1.0 - psi0) * t;  // shock speed (F(0) - F(psi0))/(0 - psi0) = -q (1 - psi0)
+    return {[=](double z) { return z < lower ? 1.0 : z < upper ? psi0 : 0.0; }, {lower, upper}};
+}
+
+PiecewiseLinear graded_batch(double z0, double q, double t) {
+    const double s = q * t;
+    if (s > 1.0 + 2.0 * std::sqrt(z0 * (1.0 - z0)))
+        throw std::invalid_argument("graded_batch: the shocks have met; the formula no longer holds");
+    const double fan_lo = z0 - s, fan_hi = z0 + s;  // edges of the centred fan
+    const double lower = fan_lo > 0.0 ? 0.0 : std::pow(std::sqrt(s) - std::sqrt(z0), 2);
+    const double upper = fan_hi < 1.0 ? 1.0 : 1.0 - std::pow(std::sqrt(s) - std::sqrt(1.0 - z0), 2);
+    const auto value = [=](double z) {
+        if (z < lower) return 1.0;  // small particles that reached the base (after the fan hit it)
+        if (z > upper) return 0.0;  // large particles that reached the surface
+        if (z < fan_lo) return 0.0;
+        if (z > fan_hi) return 1.0;
+        return 0.5 * (1.0 + (z - z0) / s);  // characteristic speed q (2 psi - 1) = (z - z0)/t
+    };
+    std::vector<double> breaks = {lower, upper};
+    if (fan_lo > 0.0) breaks.push_back(fan_lo);
+    if (fan_hi < 1.0) breaks.push_back(fan_hi);
+    return {value, breaks};
+}
+
+std::vector<double> cell_averages(const PiecewiseLinear& profile, int cells, double length) {
+    const double h = length / cells;
+    std::vector<double> averages(cells);
+    for (int k = 0; k < cells; ++k) {
+        const double a = k * h, b = (k + 1) * h;
+        std::vector<double> cuts = {a, b};
+        for (double z : profile.breaks)
+            if (z > a && z < b) cuts.push_back(z);
+        std::sort(cuts.begin(), cuts.end());
+        double integral = 0.0;
+        for (std::size_t p = 0; p + 1 < cuts.size(); ++p)
+            integral += (cuts[p + 1] - cuts[p]) * profile.value(0.5 * (cuts[p] + cuts[p + 1]));
+        averages[k] = integral / h;
+    }
+    return averages;
+}
+
+std::vector<double> logistic_cell_averages(double P, double psi0, int cells) {
+    const double C = (std::exp(-P * psi0) - std::exp(-P)) / (1.0 - std::exp(-P * psi0));
+    // Antiderivative of 1/(1 + C e^{Pz}): z - ln(1 + C e^{Pz})/P (log1p keeps it accurate).
+    const auto antiderivative = [&](double z) { return z - std::log1p(C * std::exp(P * z)) / P; };
+    const double h = 1.0 / cells;
+    std::vector<double> averages(cells);
+    for (int k = 0; k < cells; ++k) averages[k] = (antiderivative((k + 1) * h) - antiderivative(k * h)) / h;
+    return averages;
+}
+
+double l1_distance(const std::vector<double>& u, const std::vector<double>& v, double h) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) sum += std::fabs(u[i] - v[i]);
+    return h * sum;
+}
+
+double observed_order(double e_coarse, double e_fine, double refinement) {
+    return std::log(e_coarse / e_fine) / std::log(refinement);
+}
+
+}  // namespace granseg::verify
