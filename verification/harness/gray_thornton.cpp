@@ -42,10 +42,16 @@ std::vector<double> cell_averages(const PiecewiseLinear& profile, int cells, dou
         for (double z : profile.breaks)
             if (z > a && z < b) cuts.push_back(z);
         std::sort(cuts.begin(), cuts.end());
-        double integral = 0.0;
-        for (std::size_t p = 0; p + 1 < cuts.size(); ++p)
-            integral += (cuts[p + 1] - cuts[p]) * profile.value(0.5 * (cuts[p] + cuts[p + 1]));
-        averages[k] = integral / h;
+        double sum = 0.0, lowest = INFINITY, highest = -INFINITY;
+        for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+            const double v = profile.value(0.5 * (cuts[p] + cuts[p + 1]));  // exact on a linear piece
+            sum += (cuts[p + 1] - cuts[p]) / (b - a) * v;
+            lowest = std::min({lowest, v, profile.value(cuts[p]), profile.value(cuts[p + 1])});
+            highest = std::max({highest, v, profile.value(cuts[p]), profile.value(cuts[p + 1])});
+        }
+        // The weights sum to 1 up to round-off; keep the average inside the range of the values
+        // (a constant 1 must average to exactly 1, or phi0 = Phi psi would start above Phi).
+        averages[k] = std::clamp(sum, lowest, highest);
     }
     return averages;
 }
