@@ -75,13 +75,8 @@ double exact_cell_average(double x0, double x1, double z0, double z1) {
             if (x > x0 && x < x1) xs.push_back(x);
     }
     std::sort(xs.begin(), xs.end());
-    static const double node[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-    static const double weight[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
     double integral = 0.0;
-    for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
-        const double mid = 0.5 * (xs[i] + xs[i + 1]), half = 0.5 * (xs[i + 1] - xs[i]);
-        for (int g = 0; g < 4; ++g) integral += half * weight[g] * column_integral(mid + half * node[g]);
-    }
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i) integral += gauss_legendre4(column_integral, xs[i], xs[i + 1]);
     return integral / ((x1 - x0) * (z1 - z0));
 }
 
@@ -164,7 +159,6 @@ int main(int argc, char** argv) {
         write_data(options, "chute_phi.dat", table);
     }
     t.at_least("L1 error: fitted order over N = 16 .. 128", fitted_order(cells, errors), kChuteOrder);
-    t.at_most("L1 error at N = 128", errors.back(), 0.5 * errors.front());
     t.at_most("max bound violation (0 <= phi <= Phi), every step", bound, kBoundRoundOff * kPhi);
     t.at_most("steady budget of small particles |out - in|/in", budget, kBudgetTolerance);
     t.at_most("Phi change under its own mass fluxes (divergence)", divergence, kDivergenceTolerance * kPhi);

@@ -66,6 +66,33 @@ std::vector<double> logistic_cell_averages(double P, double psi0, int cells) {
     return averages;
 }
 
+std::vector<double> smooth_periodic_averages(double A, double q, double t, int cells) {
+    if (!(4.0 * M_PI * q * A * t < 1.0)) throw std::invalid_argument("smooth_periodic_averages: past the breaking time");
+    const auto psi = [&](double z) {
+        double xi = z;
+        for (int i = 0; i < 100; ++i) {  // g(xi) = xi + 2 q A t sin(2 pi xi) - z, g' >= 1 - 4 pi q A t > 0
+            const double step = (xi + 2.0 * q * A * t * std::sin(2.0 * M_PI * xi) - z) /
+                                (1.0 + 4.0 * M_PI * q * A * t * std::cos(2.0 * M_PI * xi));
+            xi -= step;
+            if (std::fabs(step) < 1e-16) break;
+        }
+        return 0.5 + A * std::sin(2.0 * M_PI * xi);
+    };
+    const double h = 1.0 / cells;
+    std::vector<double> averages(cells);
+    for (int k = 0; k < cells; ++k) averages[k] = gauss_legendre4(psi, k * h, (k + 1) * h) / h;
+    return averages;
+}
+
+double gauss_legendre4(const std::function<double(double)>& f, double a, double b) {
+    static const double node[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+    static const double weight[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+    const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    double sum = 0.0;
+    for (int g = 0; g < 4; ++g) sum += weight[g] * f(mid + half * node[g]);
+    return half * sum;
+}
+
 double l1_distance(const std::vector<double>& u, const std::vector<double>& v, double h) {
     double sum = 0.0;
     for (std::size_t i = 0; i < u.size(); ++i) sum += std::fabs(u[i] - v[i]);

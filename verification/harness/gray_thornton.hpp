@@ -38,6 +38,14 @@ std::vector<double> cell_averages(const PiecewiseLinear& profile, int cells, dou
 /// antiderivative z - ln(1 + C exp(P z))/P).
 std::vector<double> logistic_cell_averages(double P, double psi0, int cells);
 
+/// Smooth periodic data psi(z, 0) = 1/2 + A sin(2 pi z) on [0, 1) before the first shock forms
+/// (t < 1/(4 pi q A)): psi is constant along the characteristics z = xi + q (2 psi0(xi) - 1) t,
+/// solved for xi by Newton's method; cell averages by 4-point Gauss-Legendre quadrature.
+std::vector<double> smooth_periodic_averages(double A, double q, double t, int cells);
+
+/// Integral of f over [a, b] by 4-point Gauss-Legendre quadrature (exact for degree <= 7).
+double gauss_legendre4(const std::function<double(double)>& f, double a, double b);
+
 /// h * sum |u - v| (the discrete L1 norm of the difference on cells of width h).
 double l1_distance(const std::vector<double>& u, const std::vector<double>& v, double h);
 
