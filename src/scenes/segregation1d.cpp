@@ -33,8 +33,8 @@ struct Segregation1d : SceneJob {
         BoundsMonitor bounds;
         Progress progress("segregation1d", t_end);
         const auto check = [&] {
-            check_segregation_invariants("segregation1d", bounds, mass0, total_amount(column.grid, phi),
-                                         kMassTolerance, bounded, Phi_max);
+            check_segregation_invariants("segregation1d", bounds, solver.largest_correction(), mass0,
+                                         total_amount(column.grid, phi), kMassTolerance, bounded, Phi_max);
         };
         long steps = 0;
         solver.advance(column.fields, t_end, phi, [&](double t, double) {
@@ -50,7 +50,8 @@ struct Segregation1d : SceneJob {
                       ", cfl = " + format_number(options.cfl) + ", " + std::to_string(steps) + " steps, " +
                       std::to_string(solver.cell_updates()) + " cell updates");
         table.comment("max over the run of phi - Phi: " + format_number(bounds.max_excess, 4) +
-                      "; min of phi: " + format_number(bounds.min_phi, 4) + "; relative change of sum(phi): " +
+                      "; min of phi: " + format_number(bounds.min_phi, 4) + "; round-off clip: " +
+                      format_number(solver.largest_correction(), 3) + "; relative change of sum(phi): " +
                       format_number((total_amount(column.grid, phi) - mass0) / mass0, 3));
         for (std::size_t k = 0; k < phi.size(); ++k)
             table.row({column.z[k], column.fields.Phi[k], column.T[k], phi[k]});

@@ -12,7 +12,10 @@ void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>
             const std::size_t cell = cell0 + l * stride, lower = face0 + l * face_stride;
             if (!grid.is_inside(cell)) continue;
             // (eq. 64), written so that each face moves the same rounded amount ratio*F out of one
-            // cell and into the other: the sum over cells is conserved to round-off.
+            // cell and into the other, and a small net change is never lost against a large u
+            // (u + (g_low - g_up) drops any net change below half an ulp of u, always in the same
+            // direction near a balance, and drifts): the sum changes only by the rounding of the
+            // two additions.
             u[cell] = (u[cell] + ratio * F[lower]) - ratio * F[lower + face_stride];
         }
     });

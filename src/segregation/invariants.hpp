@@ -27,15 +27,17 @@ struct BoundsMonitor {
     void observe(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi);
 };
 
-/// Round-off allowance of the bounds: |violation| <= kBoundRoundOff * Phi_max counts as kept.
-/// One update phi - (dt/h)(F_up - F_low) rounds four times, each by <= DBL_EPSILON/2 of a value
-/// <= Phi; 8 DBL_EPSILON covers that with room (docs/sect2.2_segregation.md, "Bounds").
+/// Round-off allowance of the bounds: a scheme that keeps 0 <= phi <= Phi in real arithmetic
+/// may leave [0, Phi] by rounding only. One update (u + g_low) - g_up rounds twice, each time by
+/// <= DBL_EPSILON/2 of a value below 1.25 Phi; 8 DBL_EPSILON of Phi_max covers that with room.
 constexpr double kBoundRoundOff = 8 * std::numeric_limits<double>::epsilon();
 
 /// Throws InvariantError (one line, naming `context`) for a non-finite value, for a relative
-/// change of the amount above `mass_tolerance`, and, if `check_bounds`, for phi outside
-/// [0, Phi] by more than kBoundRoundOff * Phi_max.
-void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double mass_start,
-                                  double mass_now, double mass_tolerance, bool check_bounds, double Phi_max);
+/// change of the amount above `mass_tolerance`, and, if `check_bounds`, if the scheme left
+/// [0, Phi] by more than kBoundRoundOff * Phi_max before its round-off guard clipped it
+/// (`correction`, SegregationSolver::largest_correction).
+void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction,
+                                  double mass_start, double mass_now, double mass_tolerance, bool check_bounds,
+                                  double Phi_max);
 
 }  // namespace granseg

@@ -13,12 +13,16 @@
 #include "core/grid.hpp"
 #include "segregation/scheme.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace granseg {
 
-/// phi_hat = phi/Phi, or 0 where there is no material (Phi <= 0).
-inline double composition(double phi, double Phi) { return Phi > 0.0 ? phi / Phi : 0.0; }
+/// phi_hat = phi/Phi clipped to [0, 1], or 0 where there is no material (Phi <= 0). The clip
+/// matters only where Phi is tiny: the rounding of a coupled step (Phi_new from the flow, phi_new
+/// from the bulk transport) can leave phi a few ulps above such a Phi, i.e. phi_hat well above 1,
+/// which a reconstruction would spread to the neighbours.
+inline double composition(double phi, double Phi) { return Phi > 0.0 ? std::clamp(phi / Phi, 0.0, 1.0) : 0.0; }
 
 /// For every inside cell, phi at its lower face (at_lower) and at its upper face (at_upper) along
 /// `axis`: Phi_i (phi_hat_i -+ s_i/2) with the limited slope s_i; s_i = 0 next to a wall or a

@@ -65,8 +65,24 @@ void SegregationSolver::step(const FrozenFields& fields, double dt, std::vector<
             for (std::size_t f = 0; f < F_.size(); ++f) F_[f] = F_sum_[f] / kSspStages;
         }
         apply_flux_difference(grid_, axis, F_, dt, phi);  // (eq. 64)
-        for (double& v : phi)  // underflow floor (see the header)
-            if (std::fabs(v) < kUnderflowFloor) v = 0.0;
+        round_off_guard(fields.Phi, phi);
+    }
+}
+
+void SegregationSolver::round_off_guard(const std::vector<double>& Phi, std::vector<double>& phi) {
+    const bool bounded = preserves_bounds(options_.scheme);
+    for (std::size_t c = 0; c < phi.size(); ++c) {
+        if (!grid_.is_inside(c)) continue;
+        double& v = phi[c];
+        if (std::fabs(v) < kUnderflowFloor) v = 0.0;
+        if (!bounded) continue;
+        if (v < 0.0) {
+            largest_correction_ = std::max(largest_correction_, -v);
+            v = 0.0;
+        } else if (v > Phi[c]) {
+            largest_correction_ = std::max(largest_correction_, v - Phi[c]);
+            v = Phi[c];
+        }
     }
 }
 

@@ -16,10 +16,14 @@
 // max|a_k|; docs/sect2.2_segregation.md "Bounds"). So cfl <= 1 is safe for every scheme, and
 // cfl > 1 is rejected.
 //
-// Underflow floor: above a pure-large layer phi decays geometrically (by 1 - cfl per step) and
-// would sink into the subnormal range, where arithmetic is ~100 times slower and rounding can
-// leave -1e-323. After each axis, |phi| < kUnderflowFloor is set to 0; the amount removed is
-// below 1e-200 per cell, far from any measurable mass (docs/assumptions.md S6).
+// Round-off guard, after each axis (docs/assumptions.md S6):
+//  - underflow floor: above a pure-large layer phi decays geometrically and would sink into the
+//    subnormal range, where arithmetic is ~100 times slower; |phi| < kUnderflowFloor is set to 0
+//    (the amount removed is below 1e-200 per cell);
+//  - for the modified schemes, whose update keeps 0 <= phi <= Phi exactly in real arithmetic,
+//    phi is clipped to [0, Phi], which removes the last-bit rounding (-1e-33, Phi + 1 ulp) so
+//    the bounds hold exactly in floating point. The largest clip is recorded
+//    (largest_correction) so a run can prove it was round-off and not a broken scheme.
 #pragma once
 
 #include "segregation/frozen_fields.hpp"
@@ -63,8 +67,13 @@ public:
     const SegregationOptions& options() const { return options_; }
     /// Inside-cell updates done so far (one per cell, axis and Runge-Kutta stage).
     long long cell_updates() const { return cell_updates_; }
+    /// Largest amount the round-off guard moved phi back into [0, Phi] so far (0 for the
+    /// classic schemes, which are not clipped).
+    double largest_correction() const { return largest_correction_; }
 
 private:
+    /// Underflow floor and, for the modified schemes, the clip to [0, Phi] (see above).
+    void round_off_guard(const std::vector<double>& Phi, std::vector<double>& phi);
     /// The interface fluxes of the scheme along `axis` for the state phi (counts the updates).
     void face_fluxes(const FrozenFields& fields, int axis, const std::vector<double>& phi, std::vector<double>& F);
 
@@ -72,6 +81,7 @@ private:
     SegregationOptions options_;
     std::size_t inside_cells_ = 0;
     long long cell_updates_ = 0;
+    double largest_correction_ = 0.0;
     std::vector<double> F_, F_sum_, at_lower_, at_upper_, stage_;  // work space
 };
 

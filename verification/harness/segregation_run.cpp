@@ -63,6 +63,7 @@ ColumnRun run_column(const Column& column, const std::vector<double>& phi0, cons
                         : solver.advance(column.fields, t_end, run.phi);
     run.seconds = cpu_seconds() - start;
     run.updates = solver.cell_updates();
+    run.correction = solver.largest_correction();
     run.mass_drift = relative_mass_change(phi0, run.phi);
     return run;
 }

@@ -18,6 +18,7 @@ struct ColumnRun {
     double max_excess = 0.0;   // max over steps and cells of phi - Phi (monitored runs)
     double min_phi = 0.0;      // min over steps and cells of phi (monitored runs)
     long nonfinite = 0;        // non-finite values seen (monitored runs)
+    double correction = 0.0;   // largest clip of the solver's round-off guard (largest_correction)
     double mass_drift = 0.0;   // |sum phi(end) - sum phi(0)| / sum phi(0)
     long steps = 0;
     long long updates = 0;     // cell updates (one per cell and Runge-Kutta stage)
