@@ -80,7 +80,8 @@ struct EveryRun {
 };
 
 void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& every) {
-    t.note("max over the run of phi - Phi at t = 0.75 (interface Phi, T exact at the faces):");
+    t.note("max over the run of phi - Phi, t = 0.75 (classic: interface Phi, T exact at the faces;");
+    t.note("modified: the larger of it and the round-off clip if there was one, assumption S6):");
     t.note("      N   modified-godunov  modified-godunov-2  classic-upwind  classic-godunov");
     DataTable table({"N", "modified_godunov", "modified_godunov_2", "classic_upwind", "classic_godunov"});
     std::vector<std::vector<double>> excess(kSchemes.size());
@@ -93,9 +94,12 @@ void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& eve
         for (std::size_t s = 0; s < kSchemes.size(); ++s) {
             const ColumnRun run = run_column(column, phi0, scheme_options(kSchemes[s]), 0.75);
             every.add(run, preserves_bounds(kSchemes[s]));
-            excess[s].push_back(run.max_excess);
-            row.push_back(run.max_excess);
-            std::snprintf(line, sizeof line, "  %17.4e", run.max_excess);
+            // Modified schemes: also what the round-off guard clipped (an upper bound of the
+            // excess the scheme itself produced).
+            const double e = run.correction > 0.0 ? std::max(run.max_excess, run.correction) : run.max_excess;
+            excess[s].push_back(e);
+            row.push_back(e);
+            std::snprintf(line, sizeof line, "  %17.4e", e);
             text += line;
         }
         std::snprintf(line, sizeof line, "%7d", N);
