@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     fs::create_directories(work);
     const fs::path out = work / "out";
     const Cli cli(cli_path, work);
-    CheckTable t("CLI input validation (granseg run, granseg closures)");
+    CheckTable t("CLI input validation (granseg run, granseg closures, granseg direction)");
 
     const std::string head = "[scene]\nkind = \"closure-sweep\"\n[output]\ndir = \"" + out.string() + "\"\n";
     const std::vector<std::pair<std::string, std::string>> scenes = {
@@ -111,6 +111,12 @@ int main(int argc, char** argv) {
     expect_rejected(t, cli, "closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1", out);
     expect_rejected(t, cli, "closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4", out);
     expect_rejected(t, cli, "unknown command", "segregate", out);
+    const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
+    expect_rejected(t, cli, "direction, non-numeric --grad", "direction --grad '0 0 x 0 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 8 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 2 numbers in --u", "direction " + shear + " --u '1 0'", out);
+    expect_rejected(t, cli, "direction, nan in --u", "direction " + shear + " --u '1 nan 0'", out);
+    expect_rejected(t, cli, "direction, missing --u", "direction " + shear, out);
 
     // Good input: the scene writes its table, closures prints every quantity of the issue.
     const fs::path good = work / "good.toml";
@@ -124,6 +130,14 @@ int main(int argc, char** argv) {
     for (const char* name : {"g", "Phi_rcp", "Phi_co", "p_k", "p_y", "p", "eta", "lambda", "eps"})
         if (closures.out.find("\n" + std::string(name) + " = ") == std::string::npos) ++missing;
     t.count("closures, valid state: required quantities missing", missing, 0);
+    const Outcome direction = cli.run("direction " + shear + " --u '-1.3 0 0'");
+    t.count("direction, simple shear: exit status", direction.status, 0);
+    t.count("direction, simple shear: 'status = ok' and 'd_s = 0 0 1' lines",
+            (direction.out.find("status = ok\n") != std::string::npos) + (direction.out.find("\nd_s = 0 0 1\n") != std::string::npos), 2);
+    t.count("direction, simple shear: 'gamma_dot = 2.385' line", direction.out.find("\ngamma_dot = 2.385\n") != std::string::npos, 1);
+    const Outcome rigid = cli.run("direction --grad '0 -1 0 1 0 0 0 0 0' --u '1 0 0'");
+    t.count("direction, rigid rotation: exit status", rigid.status, 0);
+    t.count("direction, rigid rotation: 'status = no_shear' line", rigid.out.find("status = no_shear\n") == 0, 1);
 
     fs::remove_all(work);
     return t.finish();
