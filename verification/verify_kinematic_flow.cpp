@@ -7,7 +7,7 @@
 //     cell, and every face next to the wall, the free surface or the grid boundary carries exactly 0;
 //   - the face fluxes are the model's exact face integrals (stream-function property): M h/Phi
 //     against a 4000-point midpoint quadrature of u.n along the face (velocity() of the model);
-//   - the velocity gradient against central differences of the velocity;
+//   - the velocity gradient (inertial and relative) against central differences of the velocity;
 //   - solid-body rotation below the layer: u = Omega x x (Eigen's cross product), grad u_rel = 0,
 //     the direction procedure reports no shear;
 //   - the layer as documented: surface speed (Omega L^2/delta0) sqrt(1 - s^2/L^2) downslope,
@@ -138,19 +138,22 @@ void check_gradient(CheckTable& t, const RollingDrumFlow& flow) {
     std::mt19937_64 rng(75);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const double L = flow.half_chord(), d = flow.surface_distance();
-    double worst = 0;
+    double worst = 0, worst_rel = 0;
     for (int n = 0; n < 2000; ++n) {
         // Layer points away from its ends, its bottom (the kink) and the surface (the bed's edge).
         const double s = L * (1.9 * unit(rng) - 0.95), xi = 0.02 + 0.96 * unit(rng);
         const Vector3d X = (d - xi * flow.layer_depth(s)) * flow.normal() + s * flow.tangent();
-        Matrix3d fd = Matrix3d::Zero();
+        Matrix3d fd = Matrix3d::Zero(), fd_rel = Matrix3d::Zero();
         for (const int j : {0, 2}) {
-            const Vector3d e = kFdStep * Vector3d::Unit(j);
-            fd.col(j) = (flow.velocity(X(0) + e(0), X(2) + e(2)) - flow.velocity(X(0) - e(0), X(2) - e(2))) / (2 * kFdStep);
+            const Vector3d e = kFdStep * Vector3d::Unit(j), a = X + e, b = X - e;
+            fd.col(j) = (flow.velocity(a(0), a(2)) - flow.velocity(b(0), b(2))) / (2 * kFdStep);
+            fd_rel.col(j) = (flow.relative_velocity(a(0), a(2)) - flow.relative_velocity(b(0), b(2))) / (2 * kFdStep);
         }
         worst = std::max(worst, (fd - flow.velocity_gradient(X(0), X(2))).cwiseAbs().maxCoeff());
+        worst_rel = std::max(worst_rel, (fd_rel - flow.relative_velocity_gradient(X(0), X(2))).cwiseAbs().maxCoeff());
     }
     t.at_most("grad u vs central differences, 2000 layer points (rel.)", worst / flow.layer_shear_rate(), kGradientTol);
+    t.at_most("grad u_rel vs central differences of u_rel (rel.)", worst_rel / flow.layer_shear_rate(), kGradientTol);
 }
 
 void check_solid_body(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFields& f) {
