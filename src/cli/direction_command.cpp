@@ -62,13 +62,13 @@ int direction_main(const std::vector<std::string>& args) {
         ("T", po::value<double>(&T), "granular temperature for S^sl (m^2/s^2; default: eq. (45) at gamma_dot, substitute material)")
         ("S0", po::value<double>(&S0)->default_value(1.0), "segregation rate S0 of eq. (46) (s/m)")
         ("gravity", po::value<std::string>(&gravity_text)->default_value(gravity_text), "gravity vector g (m/s^2), 3 numbers")
-        ("shear-threshold", po::value<double>(&options.shear_threshold)->default_value(options.shear_threshold),
+        ("shear-threshold", po::value<double>(&options.shear_threshold)->default_value(options.shear_threshold, format_number(options.shear_threshold)),
          "no shear if kappa_max - kappa_min <= this (1/s), assumption D1")
-        ("min-relative-gap", po::value<double>(&options.min_relative_gap)->default_value(options.min_relative_gap),
+        ("min-relative-gap", po::value<double>(&options.min_relative_gap)->default_value(options.min_relative_gap, format_number(options.min_relative_gap)),
          "repeated eigenvalue below this relative gap, assumption D2")
-        ("tie-tolerance", po::value<double>(&options.tie_tolerance)->default_value(options.tie_tolerance),
+        ("tie-tolerance", po::value<double>(&options.tie_tolerance)->default_value(options.tie_tolerance, format_number(options.tie_tolerance)),
          "equal candidates within this fraction of |u|, assumption D4")
-        ("min-speed", po::value<double>(&options.min_speed)->default_value(options.min_speed), "u = 0 if |u| <= this (m/s), assumption D3")
+        ("min-speed", po::value<double>(&options.min_speed)->default_value(options.min_speed, format_number(options.min_speed)), "u = 0 if |u| <= this (m/s), assumption D3")
         ("solver", po::value<std::string>(&method)->default_value(method), "Eigen solver: iterative | closed-form")
         ("planar", po::bool_switch(&options.planar_xz), "2-D flow in the x-z plane: eigenpairs of the x-z block (assumption D5)");
     po::variables_map vm;
