@@ -30,8 +30,7 @@ using namespace granseg;
 using granseg::verify::CheckTable;
 using granseg::verify::direction_error;
 using granseg::verify::kRoundOff;
-using Eigen::Matrix3d;
-using Eigen::Vector3d;
+using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 

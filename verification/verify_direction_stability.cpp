@@ -31,8 +31,7 @@
 using namespace granseg;
 using granseg::verify::CheckTable;
 using granseg::verify::direction_error;
-using Eigen::Matrix3d;
-using Eigen::Vector3d;
+using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 

@@ -34,8 +34,7 @@
 using namespace granseg;
 using granseg::verify::CheckTable;
 using granseg::verify::kRoundOff;
-using Eigen::Matrix3d;
-using Eigen::Vector3d;
+using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 
