@@ -83,11 +83,14 @@ Connection convex_connection(const FluxSide& L, const FluxSide& R) {
 }
 
 //--- a_L a_R <= 0: F = 0 (docs/assumptions.md S1, S3).
-// A side with a = 0, or already at f = 0 (phi = 0 or Phi), keeps its state. Otherwise its flux
-// points away from z = 0 (a_L > 0 on the left, a_R < 0 on the right: it empties, trace 0) or
-// towards it (it fills, trace Phi); one shock moving away from z = 0 joins state and trace.
+// A side with a = 0 keeps its state (its flux vanishes identically). Otherwise its flux points
+// away from z = 0 (a_L > 0 on the left, a_R < 0 on the right: the side empties, trace 0) or
+// towards it (it fills, trace Phi), and one shock moving away from z = 0 joins state and trace.
+// A state already at the other end (phi = Phi where the side empties, 0 where it fills) carries
+// f = 0 too; it is still joined to the trace by a shock, of speed 0, so that the standing wave
+// does not cross Gamma: both traces are 0 (both sides empty) or both full, or one side has a = 0.
 double zero_flux_trace(const FluxSide& side, bool left_side) {
-    if (side.a == 0.0 || f(side, side.phi) == 0.0) return side.phi;
+    if (side.a == 0.0) return side.phi;
     const bool points_away = left_side ? side.a > 0.0 : side.a < 0.0;
     return points_away ? 0.0 : side.Phi;
 }
