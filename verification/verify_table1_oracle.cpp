@@ -50,9 +50,16 @@ constexpr double kFluxTolZeroSide = 2.5e-3;
 constexpr double kReduction = 4.0;
 // Round-off of a time average of O(|a|) fluxes over a few thousand steps.
 constexpr double kRoundOffFloor = 1e-13;
-// States next to the ramp against the exact profile there: first-order smearing of the fans
-// that touch z = 0 (cases C, D, E, F, J and mirrors) over a few cells: observed 3e-3.
-constexpr double kTraceTol = 1e-2;
+// States next to the ramp against the exact profile there. A fan that touches z = 0 (cases C, D,
+// E, F, J and mirrors) is centred, in the ramped problem, where the ramp ends (there f_min is
+// extreme: the sonic point), so the numerical profile is the exact one shifted by up to w/2, plus
+// first-order smearing over about two cells: allowed error (w/2 + 2h) |dphi/dz| + round-off.
+constexpr double kTraceCells = 2.0;
+// Where the exact profile is constant: the round-off a state accumulates over ~2000 steps.
+constexpr double kProfileFloor = 1e-11;
+// A side with a = 0 next to the ramp: no fan, but the slow filling or emptying of the ramp end
+// (see kFluxTolZeroSide) leaves an error of first order in w: observed 2.6e-4.
+constexpr double kTraceTolZeroSide = 2.5e-3;
 
 double smoothstep(double x) {
     if (x <= -0.5) return 0.0;
@@ -130,9 +137,11 @@ OracleRun solve_ramped(const Ramped& p) {
     return r;
 }
 
-/// Errors of the co-located ramp at each width, against the exact solution.
+/// Errors of the co-located ramp at each width, against the exact solution, and at the finest
+/// width how far the profile next to the ramp exceeds the allowed shift (kTraceCells).
 struct Convergence {
     std::vector<double> flux_error, trace_error;
+    double trace_excess = 0.0;
 };
 
 Convergence converge(const FluxSide& L, const FluxSide& R) {
@@ -140,10 +149,18 @@ Convergence converge(const FluxSide& L, const FluxSide& R) {
     Convergence c;
     for (double w : kWidths) {
         const OracleRun r = solve_ramped({L, R, w, 0.0, 0.0});
+        const double h = w / kCellsPerWidth;
+        double error = 0.0, excess = 0.0;
+        for (const auto& [z, phi] : {std::make_pair(r.z_left, r.phi_left), std::make_pair(r.z_right, r.phi_right)}) {
+            const double xi = r.t_end > 0.0 ? z / r.t_end : (z < 0.0 ? -1.0 : 1.0), d = 1e-7;
+            const double slope = r.t_end > 0.0 ? std::fabs(sample_phi(exact, xi + d) - sample_phi(exact, xi - d)) / (2 * d * r.t_end) : 0.0;
+            const double e = std::fabs(phi - sample_phi(exact, xi));
+            error = std::max(error, e);
+            excess = std::max(excess, e - (0.5 * w + kTraceCells * h) * slope);
+        }
         c.flux_error.push_back(std::fabs(r.flux - exact.flux));
-        const double xi_l = r.t_end > 0 ? r.z_left / r.t_end : -1e-300, xi_r = r.t_end > 0 ? r.z_right / r.t_end : 0.0;
-        c.trace_error.push_back(std::max(std::fabs(r.phi_left - sample_phi(exact, xi_l)),
-                                         std::fabs(r.phi_right - sample_phi(exact, xi_r))));
+        c.trace_error.push_back(error);
+        c.trace_excess = excess;  // the last, finest width wins
     }
     return c;
 }
@@ -171,7 +188,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
     const int per_group = family == Family::equal_T || family == Family::unequal_T ? 2 : 1;
     t.note(std::string("--- ") + family_name(family) + ": errors at w/travel = 1/10, 1/20, 1/40, 1/80 ---");
     long slow = 0, missing = 0;
-    double trace = 0.0;
+    double trace = 0.0, trace_zero_side = 0.0;
     for (int group = 1; group <= group_count(family); ++group) {
         double worst = 0.0, scale = 0.0;
         bool zero_side = false;
@@ -191,14 +208,16 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
             scale = std::max({scale, std::fabs(L.a), std::fabs(R.a)});
             zero_side = zero_side || L.a == 0.0 || R.a == 0.0;
             slow += c.flux_error.back() > std::max(c.flux_error.front() / kReduction, kRoundOffFloor);
-            trace = std::max(trace, c.trace_error.back());
+            (L.a == 0.0 || R.a == 0.0 ? trace_zero_side : trace) =
+                std::max(L.a == 0.0 || R.a == 0.0 ? trace_zero_side : trace, c.trace_excess);
         }
         t.at_most(tag + " " + group_name(family, group) + ": |F_ramp - F| at w = 1/800", worst,
                   (zero_side ? kFluxTolZeroSide : kFluxTol) * scale + kRoundOffFloor);
     }
     t.count(tag + " states not found inside their region", missing, 0);
     t.count(tag + " flux errors not reduced 4x from w = 1/100 to 1/800", slow, 0);
-    t.at_most(tag + " |phi next to the ramp - exact| at w = 1/800", trace, kTraceTol);
+    t.at_most(tag + " profile next to the ramp: error - (w/2 + 2h)|phi_z|", trace, kProfileFloor);
+    if (family == Family::mixed) t.at_most(tag + " same, next to a side with a = 0", trace_zero_side, kTraceTolZeroSide);
 }
 
 /// Assumption S2: with Q_L = (0.1, 0.4, a = 2), Q_R = (0.6, 0.7, a = 1), a Phi drops from 0.8 to
