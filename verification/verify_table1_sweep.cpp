@@ -157,7 +157,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
     long not_hit = 0;
     for (int g = 1; g <= group_count(family); ++g) {
         counts += " " + (family == Family::mixed ? std::string(mixed_kind_name(g - 1)) + ":"
-                                                 : std::string(1, kTable1[g - 1].region)) +
+                                                 : std::string(1, kTable1[g - 1].region) + ":") +
                   std::to_string(r.hits[g]);
         not_hit += r.hits[g] == 0;
     }
@@ -167,7 +167,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
     t.at_most(tag + " |F from mass balance - eq. (63)|, max", r.exact.mass_flux, 10 * kFluxTol);
     t.at_most(tag + " RH and standing-wave residuals, max", std::max(r.exact.rankine_hugoniot, r.exact.standing),
               kFluxTol);
-    t.count(tag + " Lax violations + Gamma crossings + broken chains",
+    t.count(tag + " Lax, Gamma-crossing, fan and wave-chain violations",
             r.exact.lax + r.exact.gamma_crossings + r.exact.chain + r.exact.fan_order, 0);
     t.at_most(tag + " consistency |F(u, u) - f(u)|, max", r.consistency, kFluxTol);
     t.at_most(tag + " reflection |F(L, R) + F(R', L')|, max", r.reflection, kFluxTol);
