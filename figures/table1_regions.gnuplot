@@ -16,10 +16,10 @@ set palette defined (0 "#bbbbbb", 1 "#a6cee3", 2 "#1f78b4", 3 "#b2df8a", 4 "#33a
 unset colorbox
 set key bottom right box opaque
 letters = "ABCDEFGHIJ"
-set style textbox opaque fillcolor "white" border lc rgb "black" margins 3,2
+set style textbox opaque fillcolor "white" border lc rgb "black" margins 1,1
 plot datadir.'/'.name.'_regions.dat' u 1:2:3 w image notitle, \
      '+' u 1:(2*$1) w l lw 2 lc rgb "black" t "Gamma (Phi = 2 phi)", \
      '+' u 1:1 w l lw 1 dt 2 lc rgb "black" t "phi = Phi (below: unphysical)", \
-     datadir.'/'.name.'_labels.dat' u 1:2:(sprintf("%s (%d)", substr(letters, int($3), int($3)), int($3))) w labels boxed font "Sans Bold,15" tc rgb "black" notitle, \
+     datadir.'/'.name.'_labels.dat' u 1:2:(sprintf("%s (%d)", substr(letters, int($3), int($3)), int($3))) w labels boxed font "Sans Bold,13" tc rgb "black" notitle, \
      '+' every ::0::0 u (QL_phi):(QL_Phi) w p pt 7 ps 2 lc rgb "black" t "Q_L", \
      '+' every ::0::0 u (QL_Phi/2):(QL_Phi) w p pt 6 ps 2 lw 2 lc rgb "black" t "Q* = (Phi_L/2, Phi_L)"

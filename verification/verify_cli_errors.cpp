@@ -2,14 +2,14 @@
 // arguments and checks, for each, exit status 2, exactly one line on stderr, nothing on stdout
 // and no output file; then checks that good input works, and that `granseg riemann` prints the
 // case, region, flux, waves and samples of the library's exact solution (one state per Table 1
-// case and coefficient family, verification/riemann/table1_states.hpp).
+// case and coefficient family, verification/table1/table1_states.hpp).
 //
 // Run: build/verification/verify_cli_errors [--data DIR]   (about a second; finds the CLI next
 // to its own directory, build/granseg)
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "riemann/riemann_sample.hpp"
-#include "riemann/table1_states.hpp"
+#include "table1/table1_states.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -176,14 +176,13 @@ int main(int argc, char** argv) {
     expect_rejected(t, cli, "closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1", out);
     expect_rejected(t, cli, "closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4", out);
     expect_rejected(t, cli, "unknown command", "segregate", out);
-    expect_rejected(t, cli, "riemann, phi_L > Phi_L", "riemann 0.6 0.5 0.3 0.8", out);
-    expect_rejected(t, cli, "riemann, Phi_R = 1", "riemann 0.1 0.5 0.3 1", out);
-    expect_rejected(t, cli, "riemann, Phi_L = 0", "riemann 0 0 0.3 0.8", out);
-    expect_rejected(t, cli, "riemann, negative phi_R", "riemann 0.1 0.5 -0.1 0.8", out);
-    expect_rejected(t, cli, "riemann, negative --TR", "riemann 0.1 0.5 0.3 0.8 --TR -1", out);
-    expect_rejected(t, cli, "riemann, non-numeric PHI_R", "riemann 0.1 0.5 0.3 abc", out);
-    expect_rejected(t, cli, "riemann, missing PHI_R", "riemann 0.1 0.5 0.3", out);
-    expect_rejected(t, cli, "riemann, --sample 0", "riemann 0.1 0.5 0.3 0.8 --sample 0", out);
+    const std::vector<std::pair<std::string, std::string>> bad_riemann = {
+        {"phi_L > Phi_L", "0.6 0.5 0.3 0.8"},         {"Phi_R = 1", "0.1 0.5 0.3 1"},
+        {"Phi_L = 0", "0 0 0.3 0.8"},                 {"negative phi_R", "0.1 0.5 -0.1 0.8"},
+        {"negative --TR", "0.1 0.5 0.3 0.8 --TR -1"}, {"non-numeric PHI_R", "0.1 0.5 0.3 abc"},
+        {"missing PHI_R", "0.1 0.5 0.3"},             {"--sample 0", "0.1 0.5 0.3 0.8 --sample 0"},
+    };
+    for (const auto& [label, arguments] : bad_riemann) expect_rejected(t, cli, "riemann, " + label, "riemann " + arguments, out);
 
     // Good input: the scene writes its table, closures prints every quantity of the issue.
     const fs::path good = work / "good.toml";

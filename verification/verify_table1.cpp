@@ -1,6 +1,6 @@
 // Verification of Table 1 (Sect. 3.2): for each of the ten cases, states well inside its region,
 // whose exact Riemann solutions are built from wave theory (src/riemann/riemann_solver.cpp) and
-// checked here against properties written out independently (verification/riemann/
+// checked here against properties written out independently (verification/table1/
 // exact_solution_checks.hpp):
 //   - weak solution: Rankine-Hugoniot on every shock, equal flux across the standing wave, and
 //     the mass balance of each half-line (which gives the interface flux from the profile alone);
@@ -19,8 +19,8 @@
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/tolerances.hpp"
-#include "riemann/exact_solution_checks.hpp"
-#include "riemann/table1_states.hpp"
+#include "table1/exact_solution_checks.hpp"
+#include "table1/table1_states.hpp"
 
 #include <cmath>
 #include <string>
@@ -128,10 +128,6 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = parse_program_options(argc, argv);
-    (void)options;
-    CheckTable t("Table 1: exact Riemann solutions of system (52), case by case (item 4a, 4d)");
-    StateSampler sampler(20200045);
-    for (Family family : kFamilies) check_family(t, family, sampler);
-    return t.finish();
+    return run_over_families(argc, argv, "Table 1: exact Riemann solutions of system (52), case by case (item 4a, 4d)",
+                             20200045, check_family);
 }

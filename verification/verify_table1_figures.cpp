@@ -10,14 +10,14 @@
 //   Fig. 5: the region C example Q_L = (0.1, 0.5), Q_R = (0.3, 0.8): waves in state space, on
 //     the flux curves f_L, f_R, and the profile phi(z/t). Checked: case, waves and their speeds
 //     as the caption of Fig. 5 states them, F = f_L^min, and every property of
-//     verification/riemann/exact_solution_checks.hpp.
+//     verification/table1/exact_solution_checks.hpp.
 //
 // Run: build/verification/verify_table1_figures [--data DIR]   (well under a second)
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/tolerances.hpp"
-#include "riemann/exact_solution_checks.hpp"
-#include "riemann/table1_states.hpp"
+#include "table1/exact_solution_checks.hpp"
+#include "table1/table1_states.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,7 @@
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "riemann/riemann_sample.hpp"
-#include "riemann/table1_states.hpp"
+#include "table1/table1_states.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -242,11 +242,6 @@ void check_staggered(CheckTable& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = parse_program_options(argc, argv);
-    (void)options;
-    CheckTable t("Table 1: fine-grid oracle with ramps of shrinking width (items 4b, 4d)");
-    StateSampler sampler(20200047);
-    for (Family family : kFamilies) check_family(t, family, sampler);
-    check_staggered(t);
-    return t.finish();
+    return run_over_families(argc, argv, "Table 1: fine-grid oracle with ramps of shrinking width (items 4b, 4d)",
+                             20200047, check_family, check_staggered);
 }

@@ -1,7 +1,7 @@
 // Random sweep of the Riemann problem (52) (issue 3, items 4c and 4d): per coefficient family
 // (T_L = T_R; T_L != T_R; a_L, a_R < 0; a_L a_R <= 0) 10^5 random state pairs,
 // with phi snapped to 0, Phi/2 or Phi on three sides in ten, and for every pair:
-//   - the exact solution has every property of verification/riemann/exact_solution_checks.hpp,
+//   - the exact solution has every property of verification/table1/exact_solution_checks.hpp,
 //     and its flux equals eq. (63); the pairs hit every case (counts printed);
 //   - consistency F(u, u) = f(u) of eq. (63) and of the exact solution;
 //   - reflection symmetry F(Q_L, Q_R) = -F(Q_R', Q_L') with Q' = (phi, Phi, -a): the concave
@@ -18,8 +18,8 @@
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/tolerances.hpp"
-#include "riemann/exact_solution_checks.hpp"
-#include "riemann/table1_states.hpp"
+#include "table1/exact_solution_checks.hpp"
+#include "table1/table1_states.hpp"
 
 #include <cmath>
 #include <set>
@@ -191,10 +191,6 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = parse_program_options(argc, argv);
-    (void)options;
-    CheckTable t("Table 1: random sweep of the Riemann problem (52) (items 4c, 4d)");
-    StateSampler sampler(20200046);
-    for (Family family : kFamilies) check_family(t, family, sampler);
-    return t.finish();
+    return run_over_families(argc, argv, "Table 1: random sweep of the Riemann problem (52) (items 4c, 4d)",
+                             20200046, check_family);
 }

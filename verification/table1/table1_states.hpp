@@ -4,6 +4,8 @@
 // Header-only: the programs are single files, and this is what they share.
 #pragma once
 
+#include "harness/check_table.hpp"
+#include "harness/program.hpp"
 #include "riemann/flux_curves.hpp"
 #include "riemann/segregation_flux.hpp"
 #include "riemann/table1_classifier.hpp"
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 #include <utility>
@@ -188,6 +191,19 @@ inline bool state_in_group(StateSampler& sampler, Family family, int group, doub
         return true;
     }
     return false;
+}
+
+/// The main() of a Table 1 program: one check table, `check` for every family with one sampler
+/// seeded by `seed` (so every run draws the same states), then `after`.
+inline int run_over_families(int argc, char** argv, const std::string& title, std::uint64_t seed,
+                             const std::function<void(CheckTable&, Family, StateSampler&)>& check,
+                             const std::function<void(CheckTable&)>& after = {}) {
+    parse_program_options(argc, argv);  // --data is accepted; these programs write no data
+    CheckTable t(title);
+    StateSampler sampler(seed);
+    for (Family family : kFamilies) check(t, family, sampler);
+    if (after) after(t);
+    return t.finish();
 }
 
 }  // namespace granseg::verify
