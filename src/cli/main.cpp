@@ -12,6 +12,7 @@ const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
         {"closures", "print the Sect. 2.1 closures at one state (Phi, phi_hat, T)", closures_main},
         {"run", "run a scene file (TOML); `granseg run --help` lists the scene kinds", run_main},
+        {"riemann", "solve one Riemann problem of system (52) exactly (Sect. 3.2, Table 1)", riemann_main},
     };
     return table;
 }
