@@ -62,7 +62,7 @@ constexpr double kSolidTol = kRoundOff;  // relative to Omega R
 // The surface points sit 1e-12 m below the surface, where u differs by gamma_dot * 1e-12.
 constexpr double kSurfaceSpeedTol = 1e-9;  // relative to the middle surface speed
 // Stated bounds of the direction in the layer (docs/sect2.3_direction.md, section 6; the
-// continuous suprema, sampled on a 400 x 400 (s, xi) grid, are 11.4 and 13.0 degrees).
+// continuous suprema, sampled on a 400 x 400 (s, chi) grid, are 11.4 and 13.0 degrees).
 constexpr double kCentralAngleBound = 12.0;    // deg, d_s vs surface normal, |s| <= L/2
 constexpr double kStreamlineAngleBound = 15.0;  // deg, d_s vs streamline normal, |s| <= 0.8 L
 constexpr double kMedianAngleBound = 6.0;       // deg, median over the whole layer vs surface normal
@@ -140,8 +140,8 @@ void check_gradient(CheckTable& t, const RollingDrumFlow& flow) {
     double worst = 0, worst_rel = 0;
     for (int n = 0; n < 2000; ++n) {
         // Layer points away from its ends, its bottom (the kink) and the surface (the bed's edge).
-        const double s = L * (1.9 * unit(rng) - 0.95), xi = 0.02 + 0.96 * unit(rng);
-        const Vector3d X = (d - xi * flow.layer_depth(s)) * flow.normal() + s * flow.tangent();
+        const double s = L * (1.9 * unit(rng) - 0.95), chi = 0.02 + 0.96 * unit(rng);
+        const Vector3d X = (d - chi * flow.layer_depth(s)) * flow.normal() + s * flow.tangent();
         Matrix3d fd = Matrix3d::Zero(), fd_rel = Matrix3d::Zero();
         for (const int j : {0, 2}) {
             const Vector3d e = kFdStep * Vector3d::Unit(j), a = X + e, b = X - e;
@@ -202,20 +202,20 @@ void check_layer(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFi
     t.near("layer thickness at the middle (deepest sheared cell centre) [m]", deepest, delta0, std::sqrt(2.0) * g.h[0]);
 
     // Shear rate across the middle of the layer (s = 0), derived by hand (docs/sect2.3_direction.md,
-    // section 6): kappa_max - kappa_min = 2 psi_sb/delta0^2 - 2 m' Omega (d - xi delta0)/delta0
-    // + psi_sb m' xi/L^2, psi_sb = Omega (L^2 + 2 d xi delta0 - xi^2 delta0^2)/2, m' = 2 - 2 xi.
+    // section 6): kappa_max - kappa_min = 2 psi_sb/delta0^2 - 2 m' Omega (d - chi delta0)/delta0
+    // + psi_sb m' chi/L^2, psi_sb = Omega (L^2 + 2 d chi delta0 - chi^2 delta0^2)/2, m' = 2 - 2 chi.
     const double Omega = std::fabs(flow.Omega());
     double worst_shear = 0;
-    for (const double xi : {0.1, 0.5, 0.9}) {
-        const Vector3d X = (d - xi * delta0) * flow.normal();
-        const double psi_sb = Omega * (L * L + 2 * d * xi * delta0 - xi * xi * delta0 * delta0) / 2, m1 = 2 - 2 * xi;
-        const double expected = 2 * psi_sb / (delta0 * delta0) - 2 * m1 * Omega * (d - xi * delta0) / delta0 + psi_sb * m1 * xi / (L * L);
+    for (const double chi : {0.1, 0.5, 0.9}) {
+        const Vector3d X = (d - chi * delta0) * flow.normal();
+        const double psi_sb = Omega * (L * L + 2 * d * chi * delta0 - chi * chi * delta0 * delta0) / 2, m1 = 2 - 2 * chi;
+        const double expected = 2 * psi_sb / (delta0 * delta0) - 2 * m1 * Omega * (d - chi * delta0) / delta0 + psi_sb * m1 * chi / (L * L);
         const double measured = segregation_direction(flow.relative_velocity_gradient(X(0), X(2)), Vector3d::UnitX()).principal_shear;
         worst_shear = std::max(worst_shear, std::fabs(measured / expected - 1));
-        if (xi == 0.5) t.note("  shear rate at s = 0, xi = 1/2: " + verify::format(measured) + " 1/s = " +
+        if (chi == 0.5) t.note("  shear rate at s = 0, chi = 1/2: " + verify::format(measured) + " 1/s = " +
                               verify::format(measured / flow.layer_shear_rate()) + " Omega L^2/delta0^2");
     }
-    t.at_most("shear rate at s = 0, xi = 0.1, 0.5, 0.9 vs hand formula (rel.)", worst_shear, kRoundOff);
+    t.at_most("shear rate at s = 0, chi = 0.1, 0.5, 0.9 vs hand formula (rel.)", worst_shear, kRoundOff);
 }
 
 /// d_s in the layer, from the relative velocity and gradient of every layer cell; writes the cell data.

@@ -79,7 +79,7 @@ struct RollingDrumFlow::StreamDerivatives {
     Matrix2d hessian = Matrix2d::Zero();
 };
 
-// psi = psi_sb m(xi) and its first and second derivatives by the chain rule (docs/sect2.3_direction.md,
+// psi = psi_sb m(chi) and its first and second derivatives by the chain rule (docs/sect2.3_direction.md,
 // section 6). Below the layer m = 1: solid-body rotation.
 RollingDrumFlow::StreamDerivatives RollingDrumFlow::derivatives(double x, double z) const {
     StreamDerivatives r;
@@ -91,20 +91,20 @@ RollingDrumFlow::StreamDerivatives RollingDrumFlow::derivatives(double x, double
         r.psi = psi_sb, r.grad = grad_sb, r.hessian = hess_sb;
         return r;
     }
-    // xi = -n q(s) with q = 1/delta = w^(-1/2)/delta0, w = 1 - s^2/L^2; q1 = q', q2 = q''.
+    // chi = -n q(s) with q = 1/delta = w^(-1/2)/delta0, w = 1 - s^2/L^2; q1 = q', q2 = q''.
     const auto [s, n] = surface_coordinates(x, z);
     const double L2 = L_ * L_, w = 1 - s * s / L2;
     const double q = 1 / (delta0_ * std::sqrt(w));
     const double q1 = s / (delta0_ * L2 * std::pow(w, 1.5));
     const double q2 = (1 / (L2 * std::pow(w, 1.5)) + 3 * s * s / (L2 * L2 * std::pow(w, 2.5))) / delta0_;
-    const double xi = -n * q;
-    const Vector2d grad_xi = -q * nn - n * q1 * t;
-    const Matrix2d hess_xi = -q1 * (nn * t.transpose() + t * nn.transpose()) - n * q2 * t * t.transpose();
-    const double m = 2 * xi - xi * xi, m1 = 2 - 2 * xi, m2 = -2;  // m(xi), m', m''
+    const double chi = -n * q;
+    const Vector2d grad_chi = -q * nn - n * q1 * t;
+    const Matrix2d hess_chi = -q1 * (nn * t.transpose() + t * nn.transpose()) - n * q2 * t * t.transpose();
+    const double m = 2 * chi - chi * chi, m1 = 2 - 2 * chi, m2 = -2;  // m(chi), m', m''
     r.psi = psi_sb * m;
-    r.grad = m * grad_sb + psi_sb * m1 * grad_xi;
-    r.hessian = m * hess_sb + m1 * (grad_sb * grad_xi.transpose() + grad_xi * grad_sb.transpose()) +
-                psi_sb * (m2 * grad_xi * grad_xi.transpose() + m1 * hess_xi);
+    r.grad = m * grad_sb + psi_sb * m1 * grad_chi;
+    r.hessian = m * hess_sb + m1 * (grad_sb * grad_chi.transpose() + grad_chi * grad_sb.transpose()) +
+                psi_sb * (m2 * grad_chi * grad_chi.transpose() + m1 * hess_chi);
     return r;
 }
 

@@ -19,8 +19,8 @@
 // procedure (Sect. 2.3) and the shear rate of eqs. (43), (45) need u_rel and grad u_rel.
 //
 // Stream function (volume flux per unit depth, m^2/s), u_x = d psi/dz, u_z = -d psi/dx:
-//   psi = psi_sb m(xi),  psi_sb = Omega (R^2 - x^2 - z^2)/2  (solid-body rotation, 0 on the wall),
-//   xi = -n/delta(s)  (n: height above the surface), m(xi) = 2 xi - xi^2 in the layer, m = 1 below.
+//   psi = psi_sb m(chi),  psi_sb = Omega (R^2 - x^2 - z^2)/2  (solid-body rotation, 0 on the wall),
+//   chi = -n/delta(s)  (n: height above the surface), m(chi) = 2 chi - chi^2 in the layer, m = 1 below.
 // psi = 0 on the wall and on the free surface, so no material crosses either; psi and u are
 // continuous at the layer bottom (m'(1) = 0); the shear rate jumps there, as in Khakhar's model.
 // Consequences (docs/sect2.3_direction.md, section 6): surface speed Omega (L^2 - s^2)/delta(s) =
