@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
     fs::create_directories(work);
     const fs::path out = work / "out";
     const Cli cli(cli_path, work);
-    CheckTable t("CLI input validation (granseg run, closures, riemann) and riemann output");
+    CheckTable t("CLI input validation (granseg run, closures, riemann, direction) and riemann output");
 
     const std::string head = "[scene]\nkind = \"closure-sweep\"\n[output]\ndir = \"" + out.string() + "\"\n";
     const std::vector<std::pair<std::string, std::string>> scenes = {
@@ -183,6 +183,13 @@ int main(int argc, char** argv) {
         {"missing PHI_R", "0.1 0.5 0.3"},             {"--sample 0", "0.1 0.5 0.3 0.8 --sample 0"},
     };
     for (const auto& [label, arguments] : bad_riemann) expect_rejected(t, cli, "riemann, " + label, "riemann " + arguments, out);
+    const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
+    expect_rejected(t, cli, "direction, non-numeric --grad", "direction --grad '0 0 x 0 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 8 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 10 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 2 numbers in --u", "direction " + shear + " --u '1 0'", out);
+    expect_rejected(t, cli, "direction, nan in --u", "direction " + shear + " --u '1 nan 0'", out);
+    expect_rejected(t, cli, "direction, missing --u", "direction " + shear, out);
 
     // Good input: the scene writes its table, closures prints every quantity of the issue.
     const fs::path good = work / "good.toml";
@@ -197,6 +204,14 @@ int main(int argc, char** argv) {
         if (closures.out.find("\n" + std::string(name) + " = ") == std::string::npos) ++missing;
     t.count("closures, valid state: required quantities missing", missing, 0);
     check_riemann_agreement(t, cli);
+    const Outcome direction = cli.run("direction " + shear + " --u '-1.3 0 0'");
+    t.count("direction, simple shear: exit status", direction.status, 0);
+    t.count("direction, simple shear: 'status = ok' and 'd_s = 0 0 1' lines",
+            (direction.out.find("status = ok\n") != std::string::npos) + (direction.out.find("\nd_s = 0 0 1\n") != std::string::npos), 2);
+    t.count("direction, simple shear: 'gamma_dot = 2.385' line", direction.out.find("\ngamma_dot = 2.385\n") != std::string::npos, 1);
+    const Outcome rigid = cli.run("direction --grad '0 -1 0 1 0 0 0 0 0' --u '1 0 0'");
+    t.count("direction, rigid rotation: exit status", rigid.status, 0);
+    t.count("direction, rigid rotation: 'status = no_shear' line", rigid.out.find("status = no_shear\n") == 0, 1);
 
     fs::remove_all(work);
     return t.finish();
