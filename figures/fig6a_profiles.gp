@@ -1,7 +1,7 @@
 # Fig. 6a: the 1-D segregation column of Sect. 4.1 at t = 0.75, N = 50 cells, every scheme.
 # needs: verify_overshoot
 # Data: fig6_profiles.dat (columns z Phi T phi0 modified_godunov modified_godunov_2
-#       classic_upwind classic_godunov); profiles Phi, T: docs/assumptions.md S5.
+#       classic_upwind classic_godunov); profiles Phi, T: docs/assumptions.md G4.
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig6a_profiles.gp
 set terminal pngcairo size 1100,750 font "Sans,12" noenhanced
 set output outfile

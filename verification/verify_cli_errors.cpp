@@ -1,15 +1,21 @@
 // End-to-end check of bad input handling: runs build/granseg on bad scene files and bad
 // arguments and checks, for each, exit status 2, exactly one line on stderr, nothing on stdout
-// and no output file; then checks that good input works.
+// and no output file; then checks that good input works, and that `granseg riemann` prints the
+// case, region, flux, waves and samples of the library's exact solution (one state per Table 1
+// case and coefficient family, verification/table1/table1_states.hpp).
 //
 // Run: build/verification/verify_cli_errors [--data DIR]   (about a second; finds the CLI next
 // to its own directory, build/granseg)
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
+#include "riemann/riemann_sample.hpp"
+#include "table1/table1_states.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +25,7 @@
 
 namespace fs = std::filesystem;
 using granseg::verify::CheckTable;
+using namespace granseg;
 
 namespace {
 
@@ -77,6 +84,64 @@ void expect_rejected(CheckTable& t, const Cli& cli, const std::string& label, co
     t.note("  stderr: " + o.err.substr(0, o.err.find('\n')));
 }
 
+/// The values of the `name = value` lines called `name`, in order.
+std::vector<std::string> values_of(const std::string& out, const std::string& name) {
+    std::vector<std::string> v;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(name + " = ", 0) == 0) v.push_back(line.substr(name.size() + 3));
+    return v;
+}
+
+std::string arg(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+/// `granseg riemann` against the library, one state per case (sign class) and family.
+void check_riemann_agreement(CheckTable& t, const Cli& cli) {
+    // The CLI prints 12 significant digits: values of size <= 2 agree to 2e-12; 1e-11 leaves room.
+    constexpr double kPrintTol = 1e-11;
+    constexpr int kSamples = 9;
+    verify::StateSampler sampler(20200048);
+    long runs = 0, failed_runs = 0, wrong_case = 0, wrong_waves = 0;
+    double flux_error = 0.0, sample_error = 0.0;
+    for (verify::Family family : verify::kFamilies)
+        for (int group = 1; group <= verify::group_count(family); ++group) {
+            std::pair<FluxSide, FluxSide> q;
+            if (!verify::state_in_group(sampler, family, group, 0.05, false, q)) continue;
+            const auto& [L, R] = q;
+            auto S = [](double a) { return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0; };
+            const Outcome o = cli.run("riemann " + arg(L.phi) + " " + arg(L.Phi) + " " + arg(R.phi) + " " + arg(R.Phi) +
+                                      " --TL " + arg(L.a * L.a) + " --TR " + arg(R.a * R.a) + " --SL " + arg(S(L.a)) +
+                                      " --SR " + arg(S(R.a)) + " --sample " + std::to_string(kSamples));
+            ++runs;
+            const auto cases = values_of(o.out, "case"), regions = values_of(o.out, "region"), fluxes = values_of(o.out, "flux");
+            if (o.status != 0 || cases.size() != 1 || regions.size() != 1 || fluxes.size() != 1) {
+                ++failed_runs;
+                continue;
+            }
+            // The CLI rebuilds a = S sqrt(T) from the printed T: the library solves that state.
+            const FluxSide cL{L.phi, L.Phi, S(L.a) * std::sqrt(L.a * L.a)}, cR{R.phi, R.Phi, S(R.a) * std::sqrt(R.a * R.a)};
+            const RiemannSolution s = solve_riemann(cL, cR);
+            const Table1Case c = classify_table1(cL, cR);
+            wrong_case += std::stoi(cases[0]) != c.number || regions[0] != std::string(1, c.region);
+            flux_error = std::max(flux_error, std::fabs(std::stod(fluxes[0]) - s.flux));
+            wrong_waves += values_of(o.out, "wave").size() != s.waves.size();
+            for (const std::string& line : values_of(o.out, "sample")) {
+                const double xi = std::stod(line), phi = std::stod(line.substr(line.find(' ') + 1));
+                sample_error = std::max(sample_error, std::fabs(phi - sample_phi(s, xi)));
+            }
+        }
+    t.note("  granseg riemann on " + std::to_string(runs) + " states (one per case or sign class and family)");
+    t.count("riemann: runs failing or missing case/region/flux", failed_runs, 0);
+    t.count("riemann: states whose case or region differs from the library", wrong_case, 0);
+    t.at_most("riemann: |flux printed - exact solution|, max", flux_error, kPrintTol);
+    t.count("riemann: states whose wave lines differ in number", wrong_waves, 0);
+    t.at_most("riemann: |phi(xi) printed - sample_phi|, max", sample_error, kPrintTol);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -87,7 +152,7 @@ int main(int argc, char** argv) {
     fs::create_directories(work);
     const fs::path out = work / "out";
     const Cli cli(cli_path, work);
-    CheckTable t("CLI input validation (granseg run, granseg closures)");
+    CheckTable t("CLI input validation (granseg run, closures, riemann, direction) and riemann output");
 
     const std::string head = "[scene]\nkind = \"closure-sweep\"\n[output]\ndir = \"" + out.string() + "\"\n";
     const std::vector<std::pair<std::string, std::string>> scenes = {
@@ -130,6 +195,20 @@ int main(int argc, char** argv) {
     expect_rejected(t, cli, "closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1", out);
     expect_rejected(t, cli, "closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4", out);
     expect_rejected(t, cli, "unknown command", "segregate", out);
+    const std::vector<std::pair<std::string, std::string>> bad_riemann = {
+        {"phi_L > Phi_L", "0.6 0.5 0.3 0.8"},         {"Phi_R = 1", "0.1 0.5 0.3 1"},
+        {"Phi_L = 0", "0 0 0.3 0.8"},                 {"negative phi_R", "0.1 0.5 -0.1 0.8"},
+        {"negative --TR", "0.1 0.5 0.3 0.8 --TR -1"}, {"non-numeric PHI_R", "0.1 0.5 0.3 abc"},
+        {"missing PHI_R", "0.1 0.5 0.3"},             {"--sample 0", "0.1 0.5 0.3 0.8 --sample 0"},
+    };
+    for (const auto& [label, arguments] : bad_riemann) expect_rejected(t, cli, "riemann, " + label, "riemann " + arguments, out);
+    const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
+    expect_rejected(t, cli, "direction, non-numeric --grad", "direction --grad '0 0 x 0 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 8 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 10 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0 0 0' --u '1 0 0'", out);
+    expect_rejected(t, cli, "direction, 2 numbers in --u", "direction " + shear + " --u '1 0'", out);
+    expect_rejected(t, cli, "direction, nan in --u", "direction " + shear + " --u '1 nan 0'", out);
+    expect_rejected(t, cli, "direction, missing --u", "direction " + shear, out);
 
     // Good input: the scene writes its table, closures prints every quantity of the issue.
     const fs::path good = work / "good.toml";
@@ -151,6 +230,15 @@ int main(int argc, char** argv) {
     for (const char* name : {"g", "Phi_rcp", "Phi_co", "p_k", "p_y", "p", "eta", "lambda", "eps"})
         if (closures.out.find("\n" + std::string(name) + " = ") == std::string::npos) ++missing;
     t.count("closures, valid state: required quantities missing", missing, 0);
+    check_riemann_agreement(t, cli);
+    const Outcome direction = cli.run("direction " + shear + " --u '-1.3 0 0'");
+    t.count("direction, simple shear: exit status", direction.status, 0);
+    t.count("direction, simple shear: 'status = ok' and 'd_s = 0 0 1' lines",
+            (direction.out.find("status = ok\n") != std::string::npos) + (direction.out.find("\nd_s = 0 0 1\n") != std::string::npos), 2);
+    t.count("direction, simple shear: 'gamma_dot = 2.385' line", direction.out.find("\ngamma_dot = 2.385\n") != std::string::npos, 1);
+    const Outcome rigid = cli.run("direction --grad '0 -1 0 1 0 0 0 0 0' --u '1 0 0'");
+    t.count("direction, rigid rotation: exit status", rigid.status, 0);
+    t.count("direction, rigid rotation: 'status = no_shear' line", rigid.out.find("status = no_shear\n") == 0, 1);
 
     fs::remove_all(work);
     return t.finish();

@@ -1,7 +1,7 @@
 // Sect. 4.1 and Fig. 6: the classic schemes overshoot phi <= Phi, the modified ones do not; and
 // the compressible steady state (issue 4, items 3a, 3c, 3d).
 //
-// Set-up (docs/assumptions.md S5; the paper does not give its profiles): eq. (66) on [0, 1],
+// Set-up (docs/assumptions.md G4; the paper does not give its profiles): eq. (66) on [0, 1],
 // S = 1, Phi(z) = 0.62 - 0.08 cos^2(pi z), T(z) = 0.2 + 0.8 z, phi = Phi/2 at t = 0, t = 0.75.
 // What is checked, and against what:
 //   - classic upwind and classic Godunov (interface Phi, T exact at the face): max over the run
@@ -81,7 +81,7 @@ struct EveryRun {
 
 void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& every) {
     t.note("max over the run of phi - Phi, t = 0.75 (classic: interface Phi, T exact at the faces;");
-    t.note("modified: the larger of it and the round-off clip if there was one, assumption S6):");
+    t.note("modified: the larger of it and the round-off clip if there was one, assumption G5):");
     t.note("      N   modified-godunov  modified-godunov-2  classic-upwind  classic-godunov");
     DataTable table({"N", "modified_godunov", "modified_godunov_2", "classic_upwind", "classic_godunov"});
     std::vector<std::vector<double>> excess(kSchemes.size());
@@ -119,7 +119,7 @@ void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& eve
         t.count(name + ": resolutions without overshoot (of 7)", below, 0);
         t.near(name + ": overshoot ~ N^-p, fitted p", fitted_order(kCells, excess[s]), 1.0, kOvershootOrderTolerance);
     }
-    // The interface rule hardly matters (docs/assumptions.md S3): the mean overshoots too.
+    // The interface rule hardly matters (docs/assumptions.md G2): the mean overshoots too.
     const Column mean = make_column(fig6_setup(50, InterfaceRule::mean));
     const ColumnRun run = run_column(mean, column_profile(mean, [](double z) { return 0.5 * Phi_fig6(z); }),
                                      scheme_options(SegregationScheme::classic_godunov), 0.75);
@@ -137,7 +137,7 @@ void write_profiles(const ProgramOptions& options, EveryRun& every) {
         phi.push_back(run.phi);
     }
     DataTable table({"z", "Phi", "T", "phi0", "modified_godunov", "modified_godunov_2", "classic_upwind", "classic_godunov"});
-    table.comment("Fig. 6 set-up, N = 50, t = 0.75, cfl = 0.9 (docs/assumptions.md S5)");
+    table.comment("Fig. 6 set-up, N = 50, t = 0.75, cfl = 0.9 (docs/assumptions.md G4)");
     for (std::size_t k = 0; k < phi0.size(); ++k)
         table.row({column.z[k], column.fields.Phi[k], column.T[k], phi0[k], phi[0][k], phi[1][k], phi[2][k], phi[3][k]});
     write_data(options, "fig6_profiles.dat", table);

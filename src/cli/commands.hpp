@@ -17,6 +17,8 @@ struct Command {
 const std::vector<Command>& commands();
 
 int closures_main(const std::vector<std::string>& args);
+int direction_main(const std::vector<std::string>& args);
 int run_main(const std::vector<std::string>& args);
+int riemann_main(const std::vector<std::string>& args);
 
 }  // namespace granseg::cli

@@ -11,7 +11,9 @@ namespace granseg::cli {
 const std::vector<Command>& commands() {
     static const std::vector<Command> table = {
         {"closures", "print the Sect. 2.1 closures at one state (Phi, phi_hat, T)", closures_main},
+        {"direction", "the Sect. 2.3 segregation direction d_s at one point (grad u, u)", direction_main},
         {"run", "run a scene file (TOML); `granseg run --help` lists the scene kinds", run_main},
+        {"riemann", "solve one Riemann problem of system (52) exactly (Sect. 3.2, Table 1)", riemann_main},
     };
     return table;
 }

@@ -12,7 +12,7 @@
 
 namespace granseg {
 
-/// Where the classic schemes take Phi and T at a face (docs/assumptions.md S3).
+/// Where the classic schemes take Phi and T at a face (docs/assumptions.md G2).
 enum class InterfaceRule {
     exact,  // the profiles evaluated at the face ("the exact value", Sect. 4.1)
     mean    // the arithmetic mean of the two neighbouring cells

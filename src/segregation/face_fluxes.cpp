@@ -30,7 +30,7 @@ void segregation_face_fluxes(const Grid& grid, int axis, const FrozenFields& fie
             flux = scheme == SegregationScheme::classic_upwind ? classic_upwind_flux(phi_L, phi_U, Phi_f, a_f)
                                                                : classic_godunov_flux(phi_L, phi_U, Phi_f, a_f);
         }
-        if (diffusion > 0.0)  // remixing, -D Phi_face d(phi_hat)/dx (docs/assumptions.md S4)
+        if (diffusion > 0.0)  // remixing, -D Phi_face d(phi_hat)/dx (docs/assumptions.md G3)
             flux -= diffusion * std::min(Phi[L], Phi[U]) * (composition(phi[U], Phi[U]) - composition(phi[L], Phi[L]));
         F[f.face] = flux;
     });

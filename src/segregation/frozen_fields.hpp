@@ -18,12 +18,12 @@ namespace granseg {
 struct FrozenFields {
     std::vector<double> Phi;               // granular volume fraction per cell, 0 <= Phi < 1
     std::array<std::vector<double>, 3> a;  // a_k per cell; an empty vector: no segregation along k
-    // Classic schemes only: Phi and a at the faces (docs/assumptions.md S3). An empty face field
+    // Classic schemes only: Phi and a at the faces (docs/assumptions.md G2). An empty face field
     // means the arithmetic mean of the two neighbouring cells.
     FaceFields Phi_face, a_face;
     // Diffusive remixing (Gray & Chugunov; beyond the paper) along every axis that has a:
     // flux -D min(Phi_L, Phi_R) d(phi_hat)/dx_k, which is -D d(phi)/dx_k for constant Phi
-    // (docs/assumptions.md S4). D = 0 switches it off.
+    // (docs/assumptions.md G3). D = 0 switches it off.
     double D = 0.0;
 };
 

@@ -1,7 +1,7 @@
 // The segregation sub-step: phi segregates with Phi and T frozen (eq. 52b).
 //
 // On any Grid (1-D column, 2-D x-z plane with embedded walls, periodic axes) the sub-step is
-// split over the axes (eq. 65, Lie splitting x, then y, then z; docs/assumptions.md S2): along
+// split over the axes (eq. 65, Lie splitting x, then y, then z; docs/assumptions.md G1): along
 // each axis that has coefficients a_k, eq. (64) with the interface fluxes of face_fluxes.hpp.
 // First-order schemes take one forward-Euler stage per axis. modified-godunov-2 takes the
 // three-stage second-order strong-stability-preserving Runge-Kutta method SSP-RK(3,2)
@@ -16,7 +16,7 @@
 // max|a_k|; docs/sect2.2_segregation.md "Bounds"). So cfl <= 1 is safe for every scheme, and
 // cfl > 1 is rejected.
 //
-// Round-off guard, after each axis (docs/assumptions.md S6):
+// Round-off guard, after each axis (docs/assumptions.md G5):
 //  - underflow floor: above a pure-large layer phi decays geometrically and would sink into the
 //    subnormal range, where arithmetic is ~100 times slower; |phi| < kUnderflowFloor is set to 0
 //    (the amount removed is below 1e-200 per cell);

@@ -1,7 +1,7 @@
 // Work-precision benchmark of the segregation schemes (issue 4, item 5): L1 error against CPU
 // time for every scheme, N = 50 .. 12800, on
 //   two-shock  the homogeneous Gray-Thornton batch (Phi = 0.6, q = 1, psi0 = 0.4, t = 0.6), exact;
-//   fig6       the Fig. 6 column (docs/assumptions.md S5, t = 0.75) against a much finer run,
+//   fig6       the Fig. 6 column (docs/assumptions.md G4, t = 0.75) against a much finer run,
 //              modified-godunov at N = 102400 (its own L1 error is estimated at ~3e-6, so
 //              errors near 1e-5 carry a reference error of ~25 %);
 //   graded     the normally graded batch (fan and shocks, z0 = 0.6, t = 1), exact.
