@@ -7,6 +7,7 @@
 #include "segregation/invariants.hpp"
 #include "segregation/reconstruction.hpp"
 #include "segregation/segregation_step.hpp"
+#include "tumbler/kinematic_flow.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -177,6 +178,34 @@ BOOST_AUTO_TEST_CASE(drum_with_random_sign_coefficients_keeps_bounds_and_mass) {
         for (std::size_t c = 0; c < g.cells(); ++c) drift = std::max(drift, std::fabs(Phi[c] - fields.Phi[c]));
         BOOST_TEST(drift <= 200 * 4 * DBL_EPSILON);  // round-off of 200 divergence-free updates
     }
+}
+
+// The kinematic rolling drum of issue 5 (src/tumbler/) drives the bulk step and the split
+// segregation step unchanged: its face fields are FaceFields, its grid a Grid with a bed mask.
+BOOST_AUTO_TEST_CASE(kinematic_drum_of_issue5_drives_the_steps_unchanged) {
+    const RollingDrumFields drum = discretize(RollingDrumFlow(RollingDrumParameters{}), 40, 0.6);
+    const Grid& g = drum.grid;
+    FrozenFields fields;
+    fields.Phi.assign(g.cells(), 0.0);
+    std::vector<double> phi(g.cells(), 0.0);
+    for (std::size_t c = 0; c < g.cells(); ++c)
+        if (g.is_inside(c)) fields.Phi[c] = 0.6, phi[c] = 0.3;
+    for (int axis : {0, 2}) {  // a coefficient that changes sign across the drum
+        fields.a[axis].resize(g.cells());
+        for (int k = 0; k < g.n[2]; ++k)
+            for (int i = 0; i < g.n[0]; ++i)
+                fields.a[axis][g.index(i, 0, k)] = 0.01 * std::sin(200.0 * (axis == 0 ? g.center(0, i) : g.center(2, k)));
+    }
+    SegregationSolver solver(g, SegregationOptions{});
+    const double mass = total_amount(g, phi);
+    const double dt = std::min(bulk_time_step(g, fields.Phi, drum.M, 0.9), solver.time_step(fields));
+    for (int step = 0; step < 300; ++step) {
+        transport_bulk(g, fields.Phi, drum.M, FaceFields{}, dt, phi);
+        solver.step(fields, dt, phi);
+    }
+    BOOST_TEST(within_bounds(g, phi, fields.Phi));
+    BOOST_TEST(solver.largest_correction() <= kBoundRoundOff);
+    BOOST_TEST(total_amount(g, phi) == mass, tt::tolerance(1e-13));
 }
 
 BOOST_AUTO_TEST_CASE(bulk_step_is_a_convex_combination_of_phi_hat) {
