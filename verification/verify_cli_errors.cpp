@@ -176,6 +176,8 @@ int main(int argc, char** argv) {
          column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"},
         {"segregation1d, Phi >= 1 on part of the grid",
          column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"},
+        {"segregation1d, classic scheme, T < 0 at a face only",
+         column + "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"},
         {"segregation1d, unknown scheme",
          column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
     };

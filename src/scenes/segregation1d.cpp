@@ -101,12 +101,14 @@ std::unique_ptr<SceneJob> prepare_segregation1d(const SceneFile& scene) {
     const double h = setup.length / setup.cells;
     std::vector<double> centres, faces;
     for (int k = 0; k < setup.cells; ++k) centres.push_back((k + 0.5) * h);
-    for (int k = 1; k < setup.cells; ++k) faces.push_back(k * h);
+    for (int k = 0; k <= setup.cells; ++k) faces.push_back(k * h);
     const auto Phi_ok = [](double v) { return v > 0.0 && v < 1.0; };
     const auto T_ok = [](double v) { return v >= 0.0 && std::isfinite(v); };
     require_at_points(scene, "Phi", centres, setup.Phi, Phi_ok, "0 < Phi < 1 everywhere on the grid", "cell centre");
     require_at_points(scene, "T", centres, setup.T, T_ok, "finite T >= 0 everywhere on the grid", "cell centre");
-    if (uses_interface_values(job->options.scheme) && setup.interface == InterfaceRule::exact) {
+    if (!uses_interface_values(job->options.scheme)) {
+        setup.interface = InterfaceRule::mean;  // not read; built from the centre values checked above
+    } else if (setup.interface == InterfaceRule::exact) {
         require_at_points(scene, "Phi", faces, setup.Phi, Phi_ok, "0 < Phi < 1 everywhere on the grid", "cell face");
         require_at_points(scene, "T", faces, setup.T, T_ok, "finite T >= 0 everywhere on the grid", "cell face");
     }

@@ -38,15 +38,18 @@ Column make_column(const ColumnSetup& setup) {
     // Interface values (read by the classic schemes only); face k is the lower face of cell k.
     std::vector<double>& Phi_face = c.fields.Phi_face[2];
     std::vector<double>& a_face = c.fields.a_face[2];
-    Phi_face.assign(n + 1, 0.0);
-    a_face.assign(n + 1, 0.0);
-    for (int k = 1; k < n; ++k) {
+    Phi_face.resize(n + 1);
+    a_face.resize(n + 1);
+    // The end faces are walls of the column; they get values too, so a caller who makes the
+    // axis periodic finds the wrap face filled (the mean then wraps around: cells n-1 and 0).
+    for (int k = 0; k <= n; ++k) {
         if (setup.interface == InterfaceRule::exact) {
             Phi_face[k] = setup.Phi(k * h);
             a_face[k] = coefficient(setup.T(k * h));
         } else {
-            Phi_face[k] = 0.5 * (c.fields.Phi[k - 1] + c.fields.Phi[k]);
-            a_face[k] = coefficient(0.5 * (c.T[k - 1] + c.T[k]));
+            const int below = (k + n - 1) % n, above = k % n;
+            Phi_face[k] = 0.5 * (c.fields.Phi[below] + c.fields.Phi[above]);
+            a_face[k] = coefficient(0.5 * (c.T[below] + c.T[above]));
         }
     }
     c.fields.D = setup.D;
