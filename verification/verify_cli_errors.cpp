@@ -165,6 +165,27 @@ int main(int argc, char** argv) {
         {"unknown section", head + "[sweep]\nPhi_max = 0.6\n[materail]\neta0 = 1e-4\n"},
         {"TOML syntax error", head + "[sweep]\nPhi_max = 0.6 0.7\n"},
     };
+    // Segregation column (issue 4): the acceptance cases and the grid-wide conditions.
+    const std::string column = "[scene]\nkind = \"segregation1d\"\n[output]\ndir = \"" + out.string() +
+                               "\"\n[grid]\ncells = 50\n[time]\nend = 0.75\n";
+    const std::string profiles = "Phi = \"0.62 - 0.08*cos(_pi*z)^2\"\nT = \"0.2 + 0.8*z\"\n";
+    const std::vector<std::pair<std::string, std::string>> columns = {
+        {"segregation1d, phi = Phi + 0.01", column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"},
+        {"segregation1d, cfl = 1.5", column + "cfl = 1.5\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
+        {"segregation1d, T < 0 on part of the grid",
+         column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"},
+        {"segregation1d, Phi >= 1 on part of the grid",
+         column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"},
+        {"segregation1d, classic scheme, T < 0 at a face only",
+         column + "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"},
+        {"segregation1d, unknown scheme",
+         column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
+    };
+    for (const auto& [label, text] : columns) {
+        const fs::path file = work / "scene.toml";
+        std::ofstream(file) << text;
+        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
+    }
     for (const auto& [label, text] : scenes) {
         const fs::path file = work / "scene.toml";
         std::ofstream(file) << text;
@@ -197,6 +218,14 @@ int main(int argc, char** argv) {
     const Outcome ran = cli.run("run '" + good.string() + "'");
     t.count("run, valid scene: exit status", ran.status, 0);
     t.count("run, valid scene: files written", files_below(out), 1);
+    const fs::path good_column = work / "good_column.toml";
+    std::ofstream(good_column) << column << "[initial]\n" << profiles << "phi = \"Phi/2\"\n";
+    const Outcome column_ran = cli.run("run '" + good_column.string() + "'");
+    t.count("run, valid segregation1d scene: exit status", column_ran.status, 0);
+    std::ifstream profile(out / "profile.dat");
+    std::string first_line;
+    std::getline(profile, first_line);
+    t.count("run, valid segregation1d scene: first line is '# z Phi T phi'", first_line == "# z Phi T phi", 1);
     const Outcome closures = cli.run("closures --Phi 0.59 --phi-hat 0.4 --T 1e-4");
     t.count("closures, valid state: exit status", closures.status, 0);
     long missing = 0;

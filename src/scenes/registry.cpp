@@ -1,12 +1,14 @@
 // The table of scene kinds known to `granseg run` (one row per kind).
 #include "scenes/closure_sweep.hpp"
 #include "scenes/scene_kind.hpp"
+#include "scenes/segregation1d.hpp"
 
 namespace granseg {
 
 const std::vector<SceneKind>& scene_kinds() {
     static const std::vector<SceneKind> kinds = {
         {"closure-sweep", "tabulate the Sect. 2.1 closures against Phi for a material", prepare_closure_sweep},
+        {"segregation1d", "the 1-D segregation column of Sect. 4.1, eq. (66), Fig. 6", prepare_segregation1d},
     };
     return kinds;
 }

@@ -1,0 +1,43 @@
+// Bulk transport of phi with the flow's own face mass fluxes (the coupling contract of the
+// project, docs/sect2.2_segregation.md "Coupling"; eq. 65 with F^bulk from the mass balance).
+//
+// The flow solver hands over, per axis, the face mass fluxes M (Phi u . n, averaged over its
+// stages) with which it updated Phi:
+//     Phi_new = Phi_old - dt sum_axis (M[upper] - M[lower])/h_axis,   M = 0 on wall faces.
+// phi moves with the same fluxes, donor cell in phi_hat = phi/Phi_old, unsplit:
+//     phi_new = phi_old - dt sum_axis (G[upper] - G[lower])/h_axis,   G = M phi_hat(upwind cell),
+// so in every inside cell phi_new = phi_hat_i (Phi_old - dt sum_out |M|/h) + dt sum_in |M| phi_hat_nb/h
+// and phi_new/Phi_new is a convex combination of old phi_hat values whenever
+// dt sum_out |M|/h <= Phi_old (bulk_time_step). Open domain boundaries (a chute's inflow and
+// outflow) carry M != 0: outflow takes the inside cell's phi_hat, inflow the given inflow_phi_hat.
+#pragma once
+
+#include "segregation/flux_difference.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace granseg {
+
+/// One bulk step (see above), in place. M: face mass fluxes per axis (an empty vector: none along
+/// that axis). inflow_phi_hat: phi_hat entering through open boundary faces (face fields; may
+/// be empty where nothing enters). Throws InvariantError if M != 0 on a face next to an outside
+/// cell, std::invalid_argument if inflow has no phi_hat or a field has the wrong size.
+void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
+                    const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi);
+
+/// Phi_new from the same fluxes (the mass balance the contract assumes); used by tests and by
+/// kinematic set-ups that have no flow solver.
+void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi);
+
+/// cfl times the largest dt with dt sum_out |M|/h <= Phi_old in every inside cell (+infinity if
+/// nothing flows out anywhere).
+double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M, double cfl);
+
+/// Face mass fluxes of a divergence-free flow in the x-z plane from a mass stream function
+/// psi(x, z) evaluated at the cell corners: M_x = d(psi)/dz, M_z = -d(psi)/dx as differences of
+/// corner values, so the discrete divergence vanishes to round-off. Corners of outside cells get
+/// psi = 0: embedded walls are the streamline psi = 0 and M = 0 on every wall face.
+FaceFields stream_function_mass_fluxes(const Grid& grid, const std::function<double(double x, double z)>& psi);
+
+}  // namespace granseg

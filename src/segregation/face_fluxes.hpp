@@ -1,0 +1,28 @@
+// The segregation flux on every face of one axis, for each scheme, plus the remixing flux.
+//
+// The face between a lower cell L and an upper cell U sees the state L presents at its upper
+// face and the state U presents at its lower face (the cell averages for first order, the
+// reconstructed values for modified-godunov-2):
+//   modified schemes:  F = modified_godunov_flux({phi_L, Phi_L, a_L}, {phi_U, Phi_U, a_U})  (eq. 63)
+//   classic schemes:   F = classic_*_flux(phi_L, phi_U, Phi_face, a_face)  (Sect. 4.1)
+// and F = 0 on walls (zero-flux ends, embedded walls, non-periodic domain boundaries).
+#pragma once
+
+#include "segregation/frozen_fields.hpp"
+#include "segregation/scheme.hpp"
+
+#include <vector>
+
+namespace granseg {
+
+/// F on every face normal to `axis` (resized to grid.faces(axis)). at_upper[c], at_lower[c]: the
+/// state of cell c at its upper and lower face; phi: cell averages (for the remixing flux).
+void segregation_face_fluxes(const Grid& grid, int axis, const FrozenFields& fields, SegregationScheme scheme,
+                             const std::vector<double>& phi, const std::vector<double>& at_lower,
+                             const std::vector<double>& at_upper, std::vector<double>& F);
+
+/// Largest |a| over the inside cells with material, and over the interface values the scheme
+/// reads, along `axis` (0 if the axis has no coefficients).
+double max_coefficient(const Grid& grid, int axis, const FrozenFields& fields, SegregationScheme scheme);
+
+}  // namespace granseg
