@@ -40,7 +40,7 @@ void FlowSolver::face_potentials(int a) {
     const double* psi = psi_.data();
     const unsigned char* kind = face_kind_[a].data();
     // Each cell writes its upper face; the cells of the first layer also write their lower face.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         const AxisRow ar = axis_row(a, r);
         const bool first_layer = a == 0 || (a == 1 ? r % grid_.n[1] == 0 : r < static_cast<std::size_t>(grid_.n[1]));
@@ -84,7 +84,7 @@ void FlowSolver::flow_loads(int a, double g_a) {
         out[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };
     if (a == 0) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
         for (std::size_t r = 0; r < rows_; ++r) {
             const AxisRow ar = axis_row(0, r);
             for (int q = 0; q < static_cast<int>(nx); ++q) {
@@ -97,7 +97,7 @@ void FlowSolver::flow_loads(int a, double g_a) {
     // y and z: layers in the sweep order, vectorised along x in blocks of columns.
     const int n_a = grid_.n[a];
     const std::size_t others = a == 1 ? grid_.n[2] : ny, blocks = (nx + 31) / 32;
-#pragma omp parallel for collapse(2) schedule(static)
+#pragma omp parallel for collapse(2) schedule(static) if (parallel_)
     for (std::size_t o = 0; o < others; ++o)
         for (std::size_t blk = 0; blk < blocks; ++blk)
             for (int q = 0; q < n_a; ++q) {
@@ -148,7 +148,7 @@ void FlowSolver::face_fluxes(int a) {
     };
 
     if (a == 0) {  // faces inside each row, from the first inside cell's lower face to the last one's upper face
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
         for (std::size_t r = 0; r < rows_; ++r) {
             const std::size_t base = nx * r, f0 = (nx + 1) * r;
             const long lo_end = periodic ? static_cast<long>(nx) - 1 : 0, hi_end = periodic ? 0 : static_cast<long>(nx) - 1;
@@ -164,7 +164,7 @@ void FlowSolver::face_fluxes(int a) {
     // Axes y and z: the layer of faces between rows; a face row joins cell rows (j, k) and its
     // lower neighbour along the axis.
     const std::size_t layers = n_a + 1, others = a == 1 ? grid_.n[2] : ny;
-#pragma omp parallel for collapse(2) schedule(static)
+#pragma omp parallel for collapse(2) schedule(static) if (parallel_)
     for (std::size_t l = 0; l < layers; ++l)
         for (std::size_t o = 0; o < others; ++o) {
             const std::size_t j_hi = a == 1 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
@@ -188,7 +188,7 @@ void FlowSolver::effective_pressure() {
     double *eta = eta_.data(), *lambda = lambda_.data(), *epsPhi = epsPhi_.data();
     const double* p = p_.data();
     const unsigned char* in = inside_.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
@@ -212,7 +212,7 @@ double FlowSolver::time_step(double t_end) const {
     // scheme), and the outflow bound dt * outflow <= kOutflowFraction * Phi.
     const std::size_t nx = grid_.n[0];
     double rate = 0.0, outflow_rate = 0.0;
-#pragma omp parallel for reduction(max : rate, outflow_rate) schedule(static)
+#pragma omp parallel for reduction(max : rate, outflow_rate) schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
@@ -247,7 +247,7 @@ double FlowSolver::time_step(double t_end) const {
 
 void FlowSolver::conservative_update(double dt) {
     const std::size_t nx = grid_.n[0];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
@@ -281,7 +281,7 @@ void FlowSolver::apply_body_forces(double dt) {
     const double angle = -2.0 * frame_.omega * dt, ca = std::cos(angle), sa = std::sin(angle);
     const double Phi_vac = settings_.Phi_vacuum, T_floor = settings_.T_floor;
     const std::size_t n = inside_cells_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t q = 0; q < n; ++q) {
         const std::size_t c = inside_cells_[q];
         for (int b = 0; b < 3; ++b) m_[b][c] += dt * Phi_before_[c] * g_source[b];

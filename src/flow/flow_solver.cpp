@@ -14,6 +14,10 @@
 namespace granseg {
 
 namespace {
+// Below this many cells the work of a loop is smaller than the cost of waking a second thread
+// (several microseconds per parallel loop, much more on a loaded machine): loops run serially.
+constexpr std::size_t kParallelCells = 2048;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -31,6 +35,7 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         throw std::invalid_argument("FlowSolver: T_floor, Phi_vacuum and cfl must be > 0");
 
     rows_ = static_cast<std::size_t>(grid_.n[1]) * grid_.n[2];
+    parallel_ = cells >= kParallelCells;
     row_lo_.assign(rows_, 0);
     row_hi_.assign(rows_, 0);
     inside_.assign(cells, 0);
@@ -156,7 +161,7 @@ void FlowSolver::compute_primitives() {
     const std::size_t cells = grid_.cells(), nx = grid_.n[0];
     const double *X = position_[0].data(), *Y = position_[1].data(), *Z = position_[2].data();
     double* psi = psi_.data();
-#pragma omp parallel for simd schedule(static)
+#pragma omp parallel for simd schedule(static) if (parallel_)
     for (std::size_t c = 0; c < cells; ++c) {
         const double rx = X[c] - x_c, rz = Z[c] - z_c;
         psi[c] = -(g_pot[0] * X[c] + g_pot[1] * Y[c] + g_pot[2] * Z[c]) - 0.5 * w2 * (rx * rx + rz * rz);
@@ -167,7 +172,7 @@ void FlowSolver::compute_primitives() {
     double *ux = u_[0].data(), *uy = u_[1].data(), *uz = u_[2].data(), *T = T_.data(), *p = p_.data(), *cs = c_.data();
     double *eta = eta_.data(), *lambda = lambda_.data(), *epsPhi = epsPhi_.data(), *rcp = Phi_rcp_.data(), *co = Phi_co_.data();
     long packed = 0;
-#pragma omp parallel for reduction(+ : packed) schedule(static)
+#pragma omp parallel for reduction(+ : packed) schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         const std::size_t base = nx * r;
         if (phi_)
@@ -247,7 +252,7 @@ void FlowSolver::check_invariants() const {
     };
     long bad = 0;
     const std::size_t n = inside_cells_.size();
-#pragma omp parallel for reduction(+ : bad) schedule(static)
+#pragma omp parallel for reduction(+ : bad) schedule(static) if (parallel_)
     for (std::size_t q = 0; q < n; ++q) bad += ok(inside_cells_[q]) ? 0 : 1;
     if (bad == 0) return;
     for (std::size_t c : inside_cells_)

@@ -141,6 +141,7 @@ private:
     FlowSource source_;
     std::array<bool, 3> active_{};
     std::size_t rows_ = 0;                    // ny * nz rows of cells along x
+    bool parallel_ = false;                   // threads pay off only on larger grids (kParallelCells)
     std::vector<int> row_lo_, row_hi_;        // inside cells of a row lie in [row_lo_, row_hi_)
     std::vector<std::size_t> inside_cells_;
     std::vector<unsigned char> inside_;       // 1 for inside cells (grid.inside or all)

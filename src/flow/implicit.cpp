@@ -29,7 +29,7 @@ void FlowSolver::diffusion_rows(int a, double r, const std::vector<double>& kapp
     const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
     double *lower = lower_.data(), *diag = diag_.data(), *upper = upper_.data();
     const double Phi_vac = settings_.Phi_vacuum, wall = no_slip ? 2.0 * r : 0.0;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t row = 0; row < rows_; ++row) {
         const AxisRow ar = axis_row(a, row);
 #pragma omp simd
@@ -61,7 +61,7 @@ void FlowSolver::implicit_viscosity(double dt) {
             const double *Phi = Phi_.data(), *u = u_[b].data(), *eta = eta_.data();
             const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
             double* rhs = work_.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
             for (std::size_t row = 0; row < rows_; ++row) {
                 const AxisRow ar = axis_row(a, row);
 #pragma omp simd
@@ -79,7 +79,7 @@ void FlowSolver::implicit_viscosity(double dt) {
         }
     }
     const std::size_t n = inside_cells_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t q = 0; q < n; ++q) {
         const std::size_t c = inside_cells_[q];
         for (int b = 0; b < 3; ++b) m_[b][c] = Phi_[c] * u_[b][c];
@@ -97,14 +97,14 @@ void FlowSolver::implicit_temperature(double dt) {
     const double* eta = eta_.data();
     const unsigned char* in = inside_.data();
     std::vector<double>& heat = lower_;  // work space; the line coefficients are rebuilt below
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t row = 0; row < rows_; ++row)
         for (int i = row_lo_[row]; i < row_hi_[row]; ++i) heat[nx * row + i] = 0.0;
     for (int a = 0; a < 3; ++a) {
         if (!active_[a]) continue;
         const double inv_h2 = 1.0 / (grid_.h[a] * grid_.h[a]);
         const unsigned char* kind = face_kind_[a].data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
         for (std::size_t row = 0; row < rows_; ++row) {
             const AxisRow ar = axis_row(a, row);
             for (int i = row_lo_[row]; i < row_hi_[row]; ++i) {
@@ -128,7 +128,7 @@ void FlowSolver::implicit_temperature(double dt) {
         }
     }
     const std::size_t n = inside_cells_.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t q = 0; q < n; ++q) {
         const std::size_t c = inside_cells_[q];
         T_[c] = Phi_[c] <= Phi_vac ? T_floor : (Phi_[c] * T_[c] + dt * 1.5 * heat[c]) / (Phi_[c] + dt * epsPhi_[c]);  // eq. (14)
@@ -137,7 +137,7 @@ void FlowSolver::implicit_temperature(double dt) {
     for (int a = 0; a < 3; ++a) {
         if (!active_[a]) continue;
         diffusion_rows(a, 1.5 * dt / (grid_.h[a] * grid_.h[a]), lambda_, false);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
         for (std::size_t q = 0; q < n; ++q) {
             const std::size_t c = inside_cells_[q];
             work_[c] = Phi_[c] <= Phi_vac ? T_floor : Phi_[c] * T_[c];
@@ -146,7 +146,7 @@ void FlowSolver::implicit_temperature(double dt) {
         T_.swap(work_);
     }
     // 3. Floor (docs/assumptions.md) and the conserved variable.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t q = 0; q < n; ++q) {
         const std::size_t c = inside_cells_[q];
         T_[c] = std::max(T_[c], T_floor);

@@ -125,7 +125,8 @@ std::unique_ptr<SceneJob> prepare_simple_shear(const SceneFile& scene) {
     job->frame.gravity = 0.0;
     const std::string s = "shear";
     const double U = scene.number(s, "U", Range::any());
-    job->walls[2][1] = {U, 0.0, 0.0};  // the upper wall moves along x, the lower one rests
+    job->walls[2][0] = {-0.5 * U, 0.0, 0.0};  // the walls move along x at -U/2 (bottom) and +U/2 (top)
+    job->walls[2][1] = {0.5 * U, 0.0, 0.0};
     const double Phi = scene.number(s, "Phi", packing_range(*job));
     job->Phi.assign(job->grid.cells(), Phi);
     const double T = scene.number(s, "T", Range::at_least(0), steady_shear_temperature(job->material, U / job->grid.n[2] / job->grid.h[2]));

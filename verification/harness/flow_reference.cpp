@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -28,39 +29,27 @@ double pressure_residual(double Phi, void* params) {
 struct Column {
     Eos eos;
     double g;
+    const std::function<double(double)>* T_of_z;  // or nullptr: T = eos.T
 };
 
-int column_rhs(double /*s*/, const double y[], double dyds[], void* params) {
+int column_rhs(double z, const double y[], double dydz[], void* params) {
     Column* c = static_cast<Column*>(params);
-    const double Phi = Phi_of_pressure(*c->eos.m, y[0], c->eos.T, c->eos.Phi_rcp, c->eos.Phi_co);
-    dyds[0] = Phi * c->g;  // dp/ds
-    dyds[1] = Phi;         // dm/ds
+    const double T = c->T_of_z ? (*c->T_of_z)(z) : c->eos.T;
+    dydz[0] = -c->g * Phi_of_pressure(*c->eos.m, y[0], T, c->eos.Phi_rcp, c->eos.Phi_co);  // dp/dz
     return GSL_SUCCESS;
-}
-
-/// (p, m) at depth s, integrated from the surface.
-std::array<double, 2> integrate_to(Column& column, double s) {
-    gsl_odeiv2_system sys{column_rhs, nullptr, 2, &column};
-    std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
-        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-12, 1e-12), gsl_odeiv2_driver_free);
-    double y[2] = {evaluate_closures_at(*column.eos.m, column.eos.Phi_co, column.eos.T, column.eos.Phi_rcp, column.eos.Phi_co).p, 0.0};
-    double s0 = 0.0;
-    if (s > 0.0 && gsl_odeiv2_driver_apply(driver.get(), &s0, s, y) != GSL_SUCCESS)
-        throw std::runtime_error("lithostatic_profile: gsl_odeiv2_driver_apply failed");
-    return {y[0], y[1]};
 }
 
 }  // namespace
 
 double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, double Phi_co) {
+    if (!(p > 0.0)) return 0.0;
     Eos eos{&m, T, Phi_rcp, Phi_co, p};
-    double lo = Phi_co, hi = Phi_rcp * (1.0 - 1e-12);
-    if (pressure_residual(lo, &eos) >= 0.0) return lo;
+    double lo = 0.0, hi = Phi_rcp * (1.0 - 1e-12);
     gsl_function f{pressure_residual, &eos};
     std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
         gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
     gsl_root_fsolver_set(solver.get(), &f, lo, hi);
-    for (int it = 0; it < 200; ++it) {
+    for (int it = 0; it < 300; ++it) {
         gsl_root_fsolver_iterate(solver.get());
         lo = gsl_root_fsolver_x_lower(solver.get());
         hi = gsl_root_fsolver_x_upper(solver.get());
@@ -71,19 +60,28 @@ double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, do
 
 std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g,
                                         double mass, const std::vector<double>& z, double* surface) {
-    Column column{{&m, T, Phi_rcp, Phi_co, 0.0}, g};
-    // Depth s* with m(s*) = mass, by bisection (m grows with s; Phi <= Phi_rcp bounds s* below).
-    double lo = mass / Phi_rcp, hi = mass / Phi_co;
-    for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (integrate_to(column, mid)[1] < mass ? lo : hi) = mid;
-    }
-    const double s_star = 0.5 * (lo + hi);
-    if (surface) *surface = s_star;
+    return lithostatic_profile(m, [T](double) { return T; }, Phi_rcp, Phi_co, g, mass, z, surface);
+}
+
+std::vector<double> lithostatic_profile(const Material& m, const std::function<double(double)>& T_of_z, double Phi_rcp,
+                                        double Phi_co, double g, double mass, const std::vector<double>& z,
+                                        double* surface) {
+    // The bottom carries the whole weight, p(0) = g mass; integrate dp/dz = -g Phi(p) upwards.
+    Column column{{&m, T_of_z(0.0), Phi_rcp, Phi_co, 0.0}, g, &T_of_z};
+    gsl_odeiv2_system sys{column_rhs, nullptr, 1, &column};
+    std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
+        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-7, 1e-13, 1e-12), gsl_odeiv2_driver_free);
+    double y[1] = {g * mass}, zz = 0.0;
     std::vector<double> Phi;
+    if (surface) *surface = 0.0;
     for (double zk : z) {
-        const double s = s_star - zk;
-        Phi.push_back(s <= 0.0 ? 0.0 : Phi_of_pressure(m, integrate_to(column, s)[0], T, Phi_rcp, Phi_co));
+        const double T = T_of_z(zk), p_co = evaluate_closures_at(m, Phi_co, T, Phi_rcp, Phi_co).p;
+        // Stop once the dense part ends (p below p(Phi_co)); above lies the kinetic tail, whose
+        // pressure decays on the scale T/g (1e-13 m at the floor temperature).
+        if (y[0] > p_co && gsl_odeiv2_driver_apply(driver.get(), &zz, zk, y) != GSL_SUCCESS) y[0] = 0.0;
+        if (y[0] <= p_co) y[0] = 0.0;
+        if (y[0] > 0.0 && surface) *surface = zk;
+        Phi.push_back(Phi_of_pressure(m, y[0], T, Phi_rcp, Phi_co));
     }
     return Phi;
 }

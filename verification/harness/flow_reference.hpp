@@ -7,19 +7,25 @@
 #include "closures/material.hpp"
 #include "flow/flow_solver.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace granseg::verify {
 
-/// Phi with p(Phi, T) = p on the dense branch [Phi_co, Phi_rcp) (p >= p(Phi_co)), GSL Brent.
+/// Phi with p(Phi, T) = p on [0, Phi_rcp) (0 for p <= 0), GSL Brent.
 double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, double Phi_co);
 
-/// Lithostatic column of mass `mass` per area (m) at temperature T under gravity g (m/s^2):
-/// integrates dp/ds = Phi(p) g, dm/ds = Phi(p) from the surface (s = depth, p = p(Phi_co)) with
-/// gsl_odeiv2 (RK8(9) Prince-Dormand, relative tolerance 1e-12), finds the depth s* where m = mass
-/// and returns Phi at the heights z (z = s* - s above the bottom; 0 above the surface).
+/// Lithostatic column of mass `mass` per area (m) at temperature T under gravity g (m/s^2): the
+/// bottom carries the whole weight, p(0) = g mass, and dp/dz = -g Phi(p) is integrated upwards
+/// with gsl_odeiv2 (RK8(9) Prince-Dormand, relative tolerance 1e-12) through the dense and the
+/// kinetic branch of p(Phi). Returns Phi at the heights z (increasing); the dense part ends where
+/// p falls to p(Phi_co), and `surface` receives the last z below that.
 std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g,
                                         double mass, const std::vector<double>& z, double* surface = nullptr);
+/// The same with a temperature that varies with height, T(z).
+std::vector<double> lithostatic_profile(const Material& m, const std::function<double(double)>& T_of_z, double Phi_rcp,
+                                        double Phi_co, double g, double mass, const std::vector<double>& z,
+                                        double* surface = nullptr);
 
 /// Largest |Phi u| over inside cells (the momentum density, m/s).
 double max_momentum(const FlowSolver& s);
