@@ -41,13 +41,13 @@ struct TumblerFlow : SceneJob {
         // faster than 5% of the wall speed relative to the drum; the fit avoids the wall region.
         const double Phi_level = 0.5 * material.packing.Phi_co(settings.phi_hat);
         const double v_flow = 0.05 * std::fabs(frame.omega) * R;
-        DataTable history({"t", "surface_angle_deg", "surface_points", "flowing_fraction", "max_speed", "kinetic_energy",
-                           "mass", "dt"});
+        DataTable history({"t", "steps", "surface_angle_deg", "surface_points", "flowing_fraction", "max_speed",
+                           "kinetic_energy", "mass", "mass_change", "dt"});
         history.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level) +
                         " contour within 0.8 R; flowing = |u| > " + format_number(v_flow) + " m/s");
         OutputSet out;
         std::vector<double> late_angles;  // surface angles sampled at t >= angle_from
-        const double mass0 = solver.mass();
+        const double mass0 = solver.mass();  // before the first sample
         int snapshot = 0;
         double next_history = 0.0, next_snapshot = 0.0;
         auto sample = [&] {
@@ -55,8 +55,9 @@ struct TumblerFlow : SceneJob {
                 next_history += 0.05;
                 const DrumState d = drum_state(solver, Phi_level, 0.8 * R, v_flow);
                 if (solver.time() >= angle_from) late_angles.push_back(d.surface_angle_deg);
-                history.row({solver.time(), d.surface_angle_deg, static_cast<double>(d.surface_points), d.flowing_fraction,
-                             d.max_speed, d.kinetic_energy, solver.mass(), solver.last_dt()});
+                history.row({solver.time(), static_cast<double>(solver.steps()), d.surface_angle_deg,
+                             static_cast<double>(d.surface_points), d.flowing_fraction, d.max_speed, d.kinetic_energy,
+                             solver.mass(), solver.mass() / mass0 - 1.0, solver.last_dt()});
             }
             if (vtk && (solver.time() >= next_snapshot - 1e-12 || solver.time() >= t_end)) {
                 next_snapshot += snapshot_every;
