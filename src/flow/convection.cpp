@@ -18,6 +18,10 @@ namespace {
 // Phi_new >= (1 - kOutflowFraction) Phi_old > 0 for a cell with outflow, and the transported T
 // and u_t stay convex combinations of old values (docs/flow_solver.md, positivity).
 constexpr double kOutflowFraction = 0.9;
+// And by kCompactionFraction * (Phi_rcp - Phi) / (net inflow rate): a step closes at most this
+// share of a cell's gap to random close packing, so Phi < Phi_rcp holds without a cap (the HLLC
+// waves are estimated from the states before the step and do not see the pressure diverge).
+constexpr double kCompactionFraction = 0.5;
 }  // namespace
 
 void FlowSolver::face_potentials(int a) {
@@ -211,28 +215,31 @@ double FlowSolver::time_step(double t_end) const {
     // CFL condition on the explicit waves |u_n| + c of each cell's faces (first-order unsplit
     // scheme), and the outflow bound dt * outflow <= kOutflowFraction * Phi.
     const std::size_t nx = grid_.n[0];
-    double rate = 0.0, outflow_rate = 0.0;
-#pragma omp parallel for reduction(max : rate, outflow_rate) schedule(static) if (parallel_)
+    double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
+#pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
         for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
             const std::size_t c = nx * r + i;
             if (!inside_[c]) continue;
-            double cfl = 0.0, out = 0.0;
+            double cfl = 0.0, out = 0.0, div = 0.0;
             for (int a = 0; a < 3; ++a) {
                 if (!active_[a]) continue;
                 const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
                 cfl += std::max(speed_[a][fl], speed_[a][fu]) / grid_.h[a];
                 out += (std::max(0.0, mass_flux_[a][fu]) + std::max(0.0, -mass_flux_[a][fl])) / grid_.h[a];
+                div += (mass_flux_[a][fu] - mass_flux_[a][fl]) / grid_.h[a];
             }
             rate = std::max(rate, cfl);
             if (out > 0.0) outflow_rate = std::max(outflow_rate, Phi_[c] > 0.0 ? out / Phi_[c] : INFINITY);
+            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (Phi_rcp_[c] - Phi_[c]));
         }
     }
     double dt = std::min(settings_.dt_max, t_end - t_);
     if (rate > 0.0) dt = std::min(dt, settings_.cfl / rate);
     if (outflow_rate > 0.0) dt = std::min(dt, kOutflowFraction / outflow_rate);
+    if (compaction_rate > 0.0) dt = std::min(dt, kCompactionFraction / compaction_rate);
     if (!(dt >= settings_.dt_min) && t_end - t_ > settings_.dt_min) {
         double c_max = 0.0, Phi_at = 0.0;
         for (std::size_t c : inside_cells_)
@@ -240,7 +247,9 @@ double FlowSolver::time_step(double t_end) const {
         throw InvariantError("flow: time step " + format_number(dt) + " s fell below dt_min = " +
                              format_number(settings_.dt_min) + " s at t = " + format_number(t_) +
                              " s (largest sound speed c = " + format_number(c_max) + " m/s at Phi = " +
-                             format_number(Phi_at, 8) + "; largest outflow rate " + format_number(outflow_rate) + " 1/s)");
+                             format_number(Phi_at, 8) + "; largest outflow rate " + format_number(outflow_rate) +
+                             " 1/s, compaction rate " + format_number(compaction_rate) + " 1/s): the bed is compacted "
+                             "towards Phi_rcp faster than this resolution can follow");
     }
     return dt;
 }
