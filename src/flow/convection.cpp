@@ -74,7 +74,7 @@ void FlowSolver::flow_loads(int a, double g_a) {
     const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
     const double Phi_vac = settings_.Phi_vacuum;
     const int dir = g_a < 0.0 ? -1 : g_a > 0.0 ? 1 : 0;  // sweep direction along the axis
-    auto visit = [&](std::size_t c, std::size_t fl, std::size_t fu, long lo, long hi) __attribute__((always_inline)) {
+    auto visit = [=](std::size_t c, std::size_t fl, std::size_t fu, long lo, long hi) __attribute__((always_inline)) {
         const double rise_lo = psi_face[fl] - psi[c], rise_hi = psi_face[fu] - psi[c];
         const bool up_hi = rise_hi > 0.0 && rise_lo <= 0.0, up_lo = rise_lo > 0.0 && rise_hi <= 0.0;
         const double rise = up_hi ? rise_hi : up_lo ? rise_lo : 0.0, fall = up_hi ? -rise_lo : up_lo ? -rise_hi : 0.0;
@@ -127,11 +127,11 @@ void FlowSolver::face_fluxes(int a) {
     double *mom_lo = mom_below_[a].data(), *mom_t1 = mom_[a][t1].data(), *mom_t2 = mom_[a][t2].data();
     double *p_face = p_face_[a].data(), *speed = speed_[a].data();
     const long n_a = grid_.n[a];
-    const bool periodic = grid_.periodic[a];
+    const bool periodic = grid_.periodic[a];  // used by the x faces
 
     // Face f between cells lo (below) and hi (above); on a wall the missing cell index is the
     // inside one and its state is replaced by the mirror of the inside state.
-    auto face = [&](std::size_t f, std::size_t lo, std::size_t hi) __attribute__((always_inline)) {
+    auto face = [=](std::size_t f, std::size_t lo, std::size_t hi) __attribute__((always_inline)) {
         const unsigned char k = kind[f];
         FaceState L{Phi[lo], un[lo], ut1[lo], ut2[lo], T[lo], p[lo], cs[lo]};
         FaceState R{Phi[hi], un[hi], ut1[hi], ut2[hi], T[hi], p[hi], cs[hi]};
@@ -140,28 +140,31 @@ void FlowSolver::face_fluxes(int a) {
         if (k == kWallAbove) R = mirror(L), corr_R = 0.0;
         if (k == kWallBelow) L = mirror(R), corr_L = 0.0;
         const FaceFlux F = hllc_flux(L, R);
-        const bool interior = k == kInterior, none = k == kNoFace;
-        mass[f] = interior ? F.mass : 0.0;  // exactly zero on walls
-        energy[f] = interior ? F.energy : 0.0;
-        mom_t1[f] = interior ? F.mom_t1 : 0.0;
-        mom_t2[f] = interior ? F.mom_t2 : 0.0;
-        mom_hi[f] = none ? 0.0 : F.mom_n + corr_R;
-        mom_lo[f] = none ? 0.0 : F.mom_n + corr_L;
-        p_face[f] = none ? 0.0 : std::max(0.0, F.p_star);
-        speed[f] = none ? 0.0 : std::max(std::fabs(L.u_n) + L.c, std::fabs(R.u_n) + R.c);
+        // Fluxes of mass, energy and tangential momentum vanish exactly on walls. (The face loops
+        // are left scalar: at -O2, 2-wide vectors computing every branch of the HLLC flux were
+        // slower than the branches, measured.)
+        const double interior = k == kInterior ? 1.0 : 0.0, face = k == kNoFace ? 0.0 : 1.0;
+        mass[f] = interior * F.mass;
+        energy[f] = interior * F.energy;
+        mom_t1[f] = interior * F.mom_t1;
+        mom_t2[f] = interior * F.mom_t2;
+        mom_hi[f] = face * (F.mom_n + corr_R);
+        mom_lo[f] = face * (F.mom_n + corr_L);
+        p_face[f] = face * std::max(0.0, F.p_star);
+        speed[f] = face * std::max(std::fabs(L.u_n) + L.c, std::fabs(R.u_n) + R.c);
     };
 
     if (a == 0) {  // faces inside each row, from the first inside cell's lower face to the last one's upper face
 #pragma omp parallel for schedule(static) if (parallel_)
         for (std::size_t r = 0; r < rows_; ++r) {
-            const std::size_t base = nx * r, f0 = (nx + 1) * r;
-            const long lo_end = periodic ? static_cast<long>(nx) - 1 : 0, hi_end = periodic ? 0 : static_cast<long>(nx) - 1;
-            const int last = row_lo_[r] < row_hi_[r] ? row_hi_[r] : row_lo_[r] - 1;  // empty rows: no faces
-#pragma omp simd
-            for (int i = row_lo_[r]; i <= last; ++i) {
-                const std::size_t lo = base + (i > 0 ? i - 1 : lo_end), hi = base + (i < static_cast<int>(nx) ? i : hi_end);
-                face(f0 + i, lo, hi);
-            }
+            if (row_lo_[r] >= row_hi_[r]) continue;  // no inside cell in this row
+            const std::size_t base = nx * r, f0 = (nx + 1) * r, last = nx - 1;
+            // The faces on the domain boundary (i = 0, nx) join the first and the last cell of the
+            // row (periodic) or are walls (the inside cell's index stands for the missing one).
+            if (row_lo_[r] == 0) face(f0, base + (periodic ? last : 0), base);
+            if (row_hi_[r] == static_cast<int>(nx)) face(f0 + nx, base + last, base + (periodic ? 0 : last));
+            const int i0 = std::max(row_lo_[r], 1), i1 = std::min(row_hi_[r], static_cast<int>(nx) - 1);
+            for (int i = i0; i <= i1; ++i) face(f0 + i, base + i - 1, base + i);
         }
         return;
     }
@@ -178,43 +181,29 @@ void FlowSolver::face_fluxes(int a) {
             const std::size_t r_hi = j_hi + ny * k_hi, r_lo = j_lo + ny * k_lo;
             const int i0 = std::min(row_lo_[r_hi], row_lo_[r_lo]), i1 = std::max(row_hi_[r_hi], row_hi_[r_lo]);
             const std::size_t f0 = a == 1 ? nx * (l + (ny + 1) * o) : nx * (o + ny * l);
-#pragma omp simd
             for (int i = i0; i < i1; ++i) face(f0 + i, nx * r_lo + i, nx * r_hi + i);
         }
 }
 
-void FlowSolver::effective_pressure() {
-    // eta, lambda and eps Phi are proportional to p at fixed T (eta = eta0 p/sqrt(T), eqs. 16-20):
-    // they are evaluated with the larger of the cell's own pressure and, per axis, the mean
-    // normal stress on its two faces (docs/flow_solver.md: a cell holding the free surface rests
-    // on the face below with its full weight although its own p(Phi) is nearly 0).
+double FlowSolver::effective_pressure_and_step(double t_end) {
+    // Per inside cell, from the fluxes of its faces:
+    //  - the effective pressure: eta, lambda and eps Phi are proportional to p at fixed T
+    //    (eta = eta0 p/sqrt(T), eqs. 16-20); they are evaluated with the larger of the cell's own
+    //    pressure and, per axis, the mean normal stress on its two faces (docs/flow_solver.md: a
+    //    cell holding the free surface rests on the face below with its full weight although its
+    //    own p(Phi) is nearly 0);
+    //  - the time step: the CFL condition on the explicit waves |u_n| + c of its faces
+    //    (first-order unsplit scheme), the outflow bound dt * outflow <= kOutflowFraction * Phi and
+    //    the compaction bound dt * net inflow <= kCompactionFraction * (Phi_rcp - Phi).
     const std::size_t nx = grid_.n[0];
     double *eta = eta_.data(), *lambda = lambda_.data(), *epsPhi = epsPhi_.data();
-    const double* p = p_.data();
+    const double *p = p_.data(), *Phi = Phi_.data(), *rcp = Phi_rcp_.data();
     const unsigned char* in = inside_.data();
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t r = 0; r < rows_; ++r) {
-        AxisRow ar[3];
-        for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
-#pragma omp simd
-        for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
-            const std::size_t c = nx * r + i;
-            double p_eff = p[c];
-            for (int a = 0; a < 3; ++a) {
-                if (!active_[a]) continue;
-                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                p_eff = std::max(p_eff, 0.5 * (p_face_[a][fl] + p_face_[a][fu]));
-            }
-            const double scale = in[c] && p[c] > 0.0 ? p_eff / p[c] : 0.0;
-            eta[c] *= scale, lambda[c] *= scale, epsPhi[c] *= scale;
-        }
-    }
-}
-
-double FlowSolver::time_step(double t_end) const {
-    // CFL condition on the explicit waves |u_n| + c of each cell's faces (first-order unsplit
-    // scheme), and the outflow bound dt * outflow <= kOutflowFraction * Phi.
-    const std::size_t nx = grid_.n[0];
+    const double* M[3] = {mass_flux_[0].data(), mass_flux_[1].data(), mass_flux_[2].data()};
+    const double* P[3] = {p_face_[0].data(), p_face_[1].data(), p_face_[2].data()};
+    const double* S[3] = {speed_[0].data(), speed_[1].data(), speed_[2].data()};
+    double inv_h[3];
+    for (int a = 0; a < 3; ++a) inv_h[a] = active_[a] ? 1.0 / grid_.h[a] : 0.0;
     double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
 #pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
@@ -222,18 +211,21 @@ double FlowSolver::time_step(double t_end) const {
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
         for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
             const std::size_t c = nx * r + i;
-            if (!inside_[c]) continue;
-            double cfl = 0.0, out = 0.0, div = 0.0;
+            if (!in[c]) continue;
+            double p_eff = p[c], cfl = 0.0, out = 0.0, div = 0.0;
             for (int a = 0; a < 3; ++a) {
-                if (!active_[a]) continue;
+                if (inv_h[a] == 0.0) continue;
                 const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                cfl += std::max(speed_[a][fl], speed_[a][fu]) / grid_.h[a];
-                out += (std::max(0.0, mass_flux_[a][fu]) + std::max(0.0, -mass_flux_[a][fl])) / grid_.h[a];
-                div += (mass_flux_[a][fu] - mass_flux_[a][fl]) / grid_.h[a];
+                p_eff = std::max(p_eff, 0.5 * (P[a][fl] + P[a][fu]));
+                cfl += std::max(S[a][fl], S[a][fu]) * inv_h[a];
+                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
+                div += (M[a][fu] - M[a][fl]) * inv_h[a];
             }
+            const double scale = p[c] > 0.0 ? p_eff / p[c] : 0.0;
+            eta[c] *= scale, lambda[c] *= scale, epsPhi[c] *= scale;
             rate = std::max(rate, cfl);
-            if (out > 0.0) outflow_rate = std::max(outflow_rate, Phi_[c] > 0.0 ? out / Phi_[c] : INFINITY);
-            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (Phi_rcp_[c] - Phi_[c]));
+            if (out > 0.0) outflow_rate = std::max(outflow_rate, Phi[c] > 0.0 ? out / Phi[c] : INFINITY);
+            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (rcp[c] - Phi[c]));
         }
     }
     double dt = std::min(settings_.dt_max, t_end - t_);
@@ -254,61 +246,62 @@ double FlowSolver::time_step(double t_end) const {
     return dt;
 }
 
-void FlowSolver::conservative_update(double dt) {
+void FlowSolver::explicit_update(double dt) {
+    // Conservative update of (Phi, Phi u, Phi T) from the face fluxes; then the body forces not
+    // carried by the potential: gravity along inactive or periodic axes (explicit), optional
+    // sources, and Coriolis, du/dt = 2 omega (u_z, -u_x), a rotation of (u_x, u_z) by -2 omega dt
+    // (exact); finally the primitives u and T for the implicit steps.
     const std::size_t nx = grid_.n[0];
+    const Vec3 g = frame_.gravity_at(t_);
+    Vec3 g_source{};
+    for (int a = 0; a < 3; ++a) g_source[a] = active_[a] && !grid_.periodic[a] ? 0.0 : g[a];
+    const double angle = -2.0 * frame_.omega * dt, ca = std::cos(angle), sa = std::sin(angle);
+    const double Phi_vac = settings_.Phi_vacuum, T_floor = settings_.T_floor;
+    double inv_h[3];
+    for (int a = 0; a < 3; ++a) inv_h[a] = active_[a] ? 1.0 / grid_.h[a] : 0.0;
+    const double* M[3] = {mass_flux_[0].data(), mass_flux_[1].data(), mass_flux_[2].data()};
+    const double* Ef[3] = {energy_flux_[0].data(), energy_flux_[1].data(), energy_flux_[2].data()};
+    const double* below[3] = {mom_below_[0].data(), mom_below_[1].data(), mom_below_[2].data()};
+    const double* mom[3][3];
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) mom[a][b] = mom_[a][b].data();
+    double *Phi = Phi_.data(), *E = E_.data(), *T = T_.data(), *m[3] = {m_[0].data(), m_[1].data(), m_[2].data()};
+    double* u[3] = {u_[0].data(), u_[1].data(), u_[2].data()};
+    const double *before = Phi_before_.data(), *X = position_[0].data(), *Y = position_[1].data(), *Z = position_[2].data();
+    const unsigned char* in = inside_.data();
 #pragma omp parallel for schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
         for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
             const std::size_t c = nx * r + i;
-            if (!inside_[c]) continue;
+            if (!in[c]) continue;
             double dPhi = 0.0, dE = 0.0, dm[3] = {0.0, 0.0, 0.0};
             for (int a = 0; a < 3; ++a) {
-                if (!active_[a]) continue;
+                if (inv_h[a] == 0.0) continue;
                 const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                const double inv_h = 1.0 / grid_.h[a];
-                dPhi += (mass_flux_[a][fu] - mass_flux_[a][fl]) * inv_h;
-                dE += (energy_flux_[a][fu] - energy_flux_[a][fl]) * inv_h;
-                for (int b = 0; b < 3; ++b) {
-                    const double up = b == a ? mom_below_[a][fu] : mom_[a][b][fu];
-                    dm[b] += (up - mom_[a][b][fl]) * inv_h;
-                }
+                dPhi += (M[a][fu] - M[a][fl]) * inv_h[a];
+                dE += (Ef[a][fu] - Ef[a][fl]) * inv_h[a];
+                for (int b = 0; b < 3; ++b) dm[b] += ((b == a ? below[a][fu] : mom[a][b][fu]) - mom[a][b][fl]) * inv_h[a];
             }
-            Phi_[c] = Phi_before_[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
-            E_[c] -= dt * dE;
-            for (int b = 0; b < 3; ++b) m_[b][c] -= dt * dm[b];
+            Phi[c] = before[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
+            E[c] -= dt * dE;
+            for (int b = 0; b < 3; ++b) m[b][c] += dt * (before[c] * g_source[b] - dm[b]);
+            if (source_) {
+                double rates[5];
+                source_(t_, X[c], Y[c], Z[c], rates);
+                Phi[c] += dt * rates[0];
+                for (int b = 0; b < 3; ++b) m[b][c] += dt * rates[1 + b];
+                E[c] += dt * rates[4];
+            }
+            const bool empty = Phi[c] <= Phi_vac;
+            const double inv = empty ? 0.0 : 1.0 / Phi[c];
+            const double ux = m[0][c] * inv, uz = m[2][c] * inv;
+            u[0][c] = ca * ux - sa * uz;
+            u[1][c] = m[1][c] * inv;
+            u[2][c] = sa * ux + ca * uz;
+            T[c] = empty ? T_floor : E[c] * inv;
         }
-    }
-}
-
-void FlowSolver::apply_body_forces(double dt) {
-    const Vec3 g = frame_.gravity_at(t_);
-    Vec3 g_source{};
-    for (int a = 0; a < 3; ++a) g_source[a] = active_[a] && !grid_.periodic[a] ? 0.0 : g[a];
-    // Coriolis: du/dt = 2 omega (u_z, -u_x) is a rotation of (u_x, u_z) by -2 omega dt (exact).
-    const double angle = -2.0 * frame_.omega * dt, ca = std::cos(angle), sa = std::sin(angle);
-    const double Phi_vac = settings_.Phi_vacuum, T_floor = settings_.T_floor;
-    const std::size_t n = inside_cells_.size();
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t q = 0; q < n; ++q) {
-        const std::size_t c = inside_cells_[q];
-        for (int b = 0; b < 3; ++b) m_[b][c] += dt * Phi_before_[c] * g_source[b];
-        if (source_) {
-            double rates[5];
-            source_(t_, position_[0][c], position_[1][c], position_[2][c], rates);
-            Phi_[c] += dt * rates[0];
-            for (int b = 0; b < 3; ++b) m_[b][c] += dt * rates[1 + b];
-            E_[c] += dt * rates[4];
-        }
-        const double Phi = Phi_[c];
-        const bool empty = Phi <= Phi_vac;
-        const double inv = empty ? 0.0 : 1.0 / Phi;
-        const double ux = m_[0][c] * inv, uz = m_[2][c] * inv;
-        u_[0][c] = ca * ux - sa * uz;
-        u_[1][c] = m_[1][c] * inv;
-        u_[2][c] = sa * ux + ca * uz;
-        T_[c] = empty ? T_floor : E_[c] * inv;
     }
 }
 

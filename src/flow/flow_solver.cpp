@@ -36,6 +36,7 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
 
     rows_ = static_cast<std::size_t>(grid_.n[1]) * grid_.n[2];
     parallel_ = cells >= kParallelCells;
+    lines_.set_parallel(parallel_);
     row_lo_.assign(rows_, 0);
     row_hi_.assign(rows_, 0);
     inside_.assign(cells, 0);
@@ -219,10 +220,8 @@ double FlowSolver::step(double t_end) {
     t0 = clock::now();
     for (int a = 0; a < 3; ++a)
         if (active_[a]) face_potentials(a), face_fluxes(a);
-    effective_pressure();
-    const double dt = time_step(t_end);
-    conservative_update(dt);
-    apply_body_forces(dt);
+    const double dt = effective_pressure_and_step(t_end);
+    explicit_update(dt);
     timers_.convection += seconds_since(t0);
 
     t0 = clock::now();

@@ -120,10 +120,8 @@ private:
     void face_potentials(int axis);
     void flow_loads(int axis, double g_axis);
     void face_fluxes(int axis);
-    void effective_pressure();
-    double time_step(double t_end) const;
-    void conservative_update(double dt);
-    void apply_body_forces(double dt);
+    double effective_pressure_and_step(double t_end);
+    void explicit_update(double dt);
     /// Line coefficients of Phi x - dt d/dx_a(kappa dx/dx_a) with r = dt/h^2 (times 3/2 for T):
     /// harmonic-mean face values, wall faces Dirichlet (no_slip) or zero flux; factorised.
     void diffusion_rows(int axis, double r, const std::vector<double>& kappa, bool no_slip);

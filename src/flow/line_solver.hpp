@@ -23,12 +23,15 @@ public:
                 const std::vector<double>& upper);
     /// Overwrites x (the right-hand side on entry) with the solution; any number of calls per factor().
     void solve(std::vector<double>& x) const;
+    /// Whether blocks of lines are shared among OpenMP threads (worth it on larger grids only).
+    void set_parallel(bool parallel) { parallel_ = parallel; }
 
 private:
-    void forward_backward(double* x) const;
+    /// Thomas forward elimination and back substitution of the lines q0 <= q < q1 of block o.
+    void sweep(double* x, std::size_t o, std::size_t q0, std::size_t q1) const;
     const Grid* grid_ = nullptr;
     int axis_ = 0;
-    bool cyclic_ = false;
+    bool cyclic_ = false, parallel_ = false;
     std::vector<double> lower_, inv_pivot_, ratio_;  // Thomas: 1/pivot and upper/pivot per cell
     std::vector<double> z_;                          // cyclic: solution for the correction vector
     std::vector<double> corner_lo_, denom_;  // cyclic: beta/gamma and the Sherman-Morrison denominator per line
