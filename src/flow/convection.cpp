@@ -56,24 +56,36 @@ void FlowSolver::face_potentials(int a) {
                 psi_face[fl] = 0.5 * ((kind[fl] == kWallBelow && lo == 0 ? ghost(c, -1.0) : psi[c + lo]) + psi[c]);
         }
     }
-    flow_loads(a, g_a);
+    // Loads pass down chains of unsupported cells along an axis with the weight
+    // w = max(0, |g_a| - max_(b != a) |g_b|)/|g|: fully along gravity when it is aligned with the
+    // axis (a stack of loose cells, dust on a partly filled cell), not at all when gravity is
+    // diagonal; along a row across gravity a chain would make loose surface cells a strut that
+    // leans on the wall instead of sliding down the slope. w varies continuously with the
+    // direction of gravity as it turns in the drum.
+    double g_other = 0.0, g_norm = 0.0;
+    for (int b = 0; b < 3; ++b) {
+        if (!active_[b] || grid_.periodic[b]) continue;
+        g_norm += g[b] * g[b];
+        if (b != a) g_other = std::max(g_other, std::fabs(g[b]));
+    }
+    const double weight = g_norm > 0.0 ? std::max(0.0, std::fabs(g_a) - g_other) / std::sqrt(g_norm) : 0.0;
+    flow_loads(a, g_a, weight);
 }
 
-void FlowSolver::flow_loads(int a, double g_a) {
+void FlowSolver::flow_loads(int a, double g_a, double weight) {
     // Per cell: `load`, the weight its downhill face carries beyond p + Phi |d_psi| (flow/hllc.hpp),
     // and `carry`, the pressure an unsupported cell passes on at its uphill face. A cell is
     // unsupported when p <= Phi rise (rise: potential rise to its uphill face); then its uphill
     // face carries what rests on it (the downhill face pressure of the cell above, if that cell
     // holds material) and its downhill face adds that to its own unsupported weight. Cells are
     // visited in the direction of gravity along the axis so that loads pass down chains of
-    // unsupported cells (dust on a partly filled surface cell); without a gravity component along
-    // the axis no load is carried.
+    // unsupported cells (dust on a partly filled surface cell), scaled by `weight` per link.
     const std::size_t nx = grid_.n[0], ny = grid_.n[1];
     double *load = load_[a].data(), *carry = carry_[a].data(), *out = work_.data();
     const double *Phi = Phi_.data(), *p = p_.data(), *psi = psi_.data(), *psi_face = psi_face_[a].data();
     const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
     const double Phi_vac = settings_.Phi_vacuum;
-    const int dir = g_a < 0.0 ? -1 : g_a > 0.0 ? 1 : 0;  // sweep direction along the axis
+    const int dir = weight == 0.0 ? 0 : g_a < 0.0 ? -1 : 1;  // sweep direction along the axis
     auto visit = [=](std::size_t c, std::size_t fl, std::size_t fu, long lo, long hi) __attribute__((always_inline)) {
         const double rise_lo = psi_face[fl] - psi[c], rise_hi = psi_face[fu] - psi[c];
         const bool up_hi = rise_hi > 0.0 && rise_lo <= 0.0, up_lo = rise_lo > 0.0 && rise_hi <= 0.0;
@@ -83,7 +95,7 @@ void FlowSolver::flow_loads(int a, double g_a) {
         // The cell above along the sweep is the uphill neighbour when it was visited just before.
         const bool from_hi = up_hi && dir < 0 && kind[fu] == kInterior, from_lo = up_lo && dir > 0 && kind[fl] == kInterior;
         const double arriving = from_hi ? out[c + hi] : from_lo ? out[c + lo] : 0.0;
-        carry[c] = unsupported ? arriving : 0.0;
+        carry[c] = unsupported ? weight * arriving : 0.0;
         load[c] = filled ? unsupported_load(Phi[c], p[c], rise) + carry[c] : 0.0;
         out[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };

@@ -118,7 +118,7 @@ private:
     void classify_faces();
     void compute_primitives();
     void face_potentials(int axis);
-    void flow_loads(int axis, double g_axis);
+    void flow_loads(int axis, double g_axis, double weight);
     void face_fluxes(int axis);
     double effective_pressure_and_step(double t_end);
     void explicit_update(double dt);
