@@ -106,6 +106,7 @@ bool in_bed(const Material& m, double Phi) { return Phi >= 0.5 * m.packing.Phi_c
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     const Material m = Material::glass_substitute();
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0), theta_mu = std::atan(mu) * 180.0 / M_PI;
     CheckTable table("Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)");

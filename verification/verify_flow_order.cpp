@@ -23,6 +23,7 @@
 #include "closures/closures.hpp"
 #include "flow/flow_solver.hpp"
 #include "harness/check_table.hpp"
+#include "harness/flow_reference.hpp"
 #include "harness/program.hpp"
 
 #include <array>
@@ -171,6 +172,7 @@ Errors run(const Material& m, int n) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     const Material m = Material::glass_substitute();
     CheckTable table("Sect. 2.1 flow (e): order of accuracy, manufactured solution of the full system");
     DataTable data({"n", "h", "error_Phi", "error_u", "error_T"});

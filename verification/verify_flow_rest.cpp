@@ -118,6 +118,7 @@ double mass_bound(double steps) { return steps * DBL_EPSILON; }
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     const Material m = Material::glass_substitute();
     CheckTable table("Sect. 2.1 flow (a): bed at rest under gravity");
     DataTable history({"t", "max_momentum"});

@@ -178,6 +178,7 @@ void scenes(CheckTable& table) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     const Material m = Material::glass_substitute();
     CheckTable table("Sect. 2.1/4.2 flow (d): rotating frame, 3-D slab, mass in every scene");
     DataTable history({"t", "max_speed", "max_T"});

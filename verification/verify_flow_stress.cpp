@@ -93,6 +93,7 @@ FlowSolver boxes(const Material& m, const std::function<int(double, double)>& bl
 
 int main(int argc, char** argv) {
     verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     const Material m = Material::glass_substitute();
     const FlowSettings s;
     const double rcp = m.packing.Phi_rcp(s.phi_hat);

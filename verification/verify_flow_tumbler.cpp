@@ -17,6 +17,7 @@
 // Run: build/verification/verify_flow_tumbler [--data DIR]   (10-20 s)
 #include "closures/material.hpp"
 #include "harness/check_table.hpp"
+#include "harness/flow_reference.hpp"
 #include "harness/program.hpp"
 #include "scenes/scene_kind.hpp"
 
@@ -57,6 +58,7 @@ std::vector<std::vector<double>> rows(const std::string& path) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
+    verify::use_one_thread();
     CheckTable table("Sect. 4.2 tumbler-flow, 32 cells per diameter, 25 s");
     const std::string dir = options.data_dir + "/flow_tumbler";
     const std::string scene = "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 32\n"

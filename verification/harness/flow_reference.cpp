@@ -5,6 +5,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_roots.h>
+#include <omp.h>
 
 #include <array>
 #include <cmath>
@@ -85,6 +86,8 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
     }
     return Phi;
 }
+
+void use_one_thread() { omp_set_num_threads(1); }
 
 double max_momentum(const FlowSolver& s) {
     double worst = 0.0;

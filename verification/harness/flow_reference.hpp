@@ -27,6 +27,10 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
                                         double Phi_co, double g, double mass, const std::vector<double>& z,
                                         double* surface = nullptr);
 
+/// Runs the flow solver on one OpenMP thread: `make verify` runs two programs at a time on the
+/// machine's two cores, and a second, spinning thread per program would only contend for them.
+void use_one_thread();
+
 /// Largest |Phi u| over inside cells (the momentum density, m/s).
 double max_momentum(const FlowSolver& s);
 
