@@ -241,19 +241,21 @@ double FlowSolver::effective_pressure_and_step(double t_end) {
         }
     }
     double dt = std::min(settings_.dt_max, t_end - t_);
-    if (rate > 0.0) dt = std::min(dt, settings_.cfl / rate);
-    if (outflow_rate > 0.0) dt = std::min(dt, kOutflowFraction / outflow_rate);
-    if (compaction_rate > 0.0) dt = std::min(dt, kCompactionFraction / compaction_rate);
+    const double dt_cfl = rate > 0.0 ? settings_.cfl / rate : INFINITY;
+    const double dt_outflow = outflow_rate > 0.0 ? kOutflowFraction / outflow_rate : INFINITY;
+    const double dt_compaction = compaction_rate > 0.0 ? kCompactionFraction / compaction_rate : INFINITY;
+    dt = std::min({dt, dt_cfl, dt_outflow, dt_compaction});
     if (!(dt >= settings_.dt_min) && t_end - t_ > settings_.dt_min) {
         double c_max = 0.0, Phi_at = 0.0;
         for (std::size_t c : inside_cells_)
             if (c_[c] > c_max) c_max = c_[c], Phi_at = Phi_[c];
+        const std::string cause =
+            dt == dt_compaction ? "the compaction bound: the bed is compacted towards Phi_rcp faster than this resolution can follow"
+            : dt == dt_outflow  ? "the outflow bound: a cell loses more than its mass (outflow rate " + format_number(outflow_rate) + " 1/s)"
+                                : "the CFL condition";
         throw InvariantError("flow: time step " + format_number(dt) + " s fell below dt_min = " +
-                             format_number(settings_.dt_min) + " s at t = " + format_number(t_) +
-                             " s (largest sound speed c = " + format_number(c_max) + " m/s at Phi = " +
-                             format_number(Phi_at, 8) + "; largest outflow rate " + format_number(outflow_rate) +
-                             " 1/s, compaction rate " + format_number(compaction_rate) + " 1/s): the bed is compacted "
-                             "towards Phi_rcp faster than this resolution can follow");
+                             format_number(settings_.dt_min) + " s at t = " + format_number(t_) + " s, set by " + cause +
+                             " (largest sound speed c = " + format_number(c_max) + " m/s at Phi = " + format_number(Phi_at, 8) + ")");
     }
     return dt;
 }
