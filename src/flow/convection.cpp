@@ -265,7 +265,6 @@ void FlowSolver::explicit_update(double dt) {
     // carried by the potential: gravity along inactive or periodic axes (explicit), optional
     // sources, and Coriolis, du/dt = 2 omega (u_z, -u_x), a rotation of (u_x, u_z) by -2 omega dt
     // (exact); finally the primitives u and T for the implicit steps.
-    const std::size_t nx = grid_.n[0];
     const Vec3 g = frame_.gravity_at(t_);
     Vec3 g_source{};
     for (int a = 0; a < 3; ++a) g_source[a] = active_[a] && !grid_.periodic[a] ? 0.0 : g[a];
@@ -282,41 +281,33 @@ void FlowSolver::explicit_update(double dt) {
     double *Phi = Phi_.data(), *E = E_.data(), *T = T_.data(), *m[3] = {m_[0].data(), m_[1].data(), m_[2].data()};
     double* u[3] = {u_[0].data(), u_[1].data(), u_[2].data()};
     const double *before = Phi_before_.data(), *X = position_[0].data(), *Y = position_[1].data(), *Z = position_[2].data();
-    const unsigned char* in = inside_.data();
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t r = 0; r < rows_; ++r) {
-        AxisRow ar[3];
-        for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
-        for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
-            const std::size_t c = nx * r + i;
-            if (!in[c]) continue;
-            double dPhi = 0.0, dE = 0.0, dm[3] = {0.0, 0.0, 0.0};
-            for (int a = 0; a < 3; ++a) {
-                if (inv_h[a] == 0.0) continue;
-                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                dPhi += (M[a][fu] - M[a][fl]) * inv_h[a];
-                dE += (Ef[a][fu] - Ef[a][fl]) * inv_h[a];
-                for (int b = 0; b < 3; ++b) dm[b] += ((b == a ? below[a][fu] : mom[a][b][fu]) - mom[a][b][fl]) * inv_h[a];
-            }
-            Phi[c] = before[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
-            E[c] -= dt * dE;
-            for (int b = 0; b < 3; ++b) m[b][c] += dt * (before[c] * g_source[b] - dm[b]);
-            if (source_) {
-                double rates[5];
-                source_(t_, X[c], Y[c], Z[c], rates);
-                Phi[c] += dt * rates[0];
-                for (int b = 0; b < 3; ++b) m[b][c] += dt * rates[1 + b];
-                E[c] += dt * rates[4];
-            }
-            const bool empty = Phi[c] <= Phi_vac;
-            const double inv = empty ? 0.0 : 1.0 / Phi[c];
-            const double ux = m[0][c] * inv, uz = m[2][c] * inv;
-            u[0][c] = ca * ux - sa * uz;
-            u[1][c] = m[1][c] * inv;
-            u[2][c] = sa * ux + ca * uz;
-            T[c] = empty ? T_floor : E[c] * inv;
+    for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+        double dPhi = 0.0, dE = 0.0, dm[3] = {0.0, 0.0, 0.0};
+        for (int a = 0; a < 3; ++a) {
+            if (inv_h[a] == 0.0) continue;
+            const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
+            dPhi += (M[a][fu] - M[a][fl]) * inv_h[a];
+            dE += (Ef[a][fu] - Ef[a][fl]) * inv_h[a];
+            for (int b = 0; b < 3; ++b) dm[b] += ((b == a ? below[a][fu] : mom[a][b][fu]) - mom[a][b][fl]) * inv_h[a];
         }
-    }
+        Phi[c] = before[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
+        E[c] -= dt * dE;
+        for (int b = 0; b < 3; ++b) m[b][c] += dt * (before[c] * g_source[b] - dm[b]);
+        if (source_) {
+            double rates[5];
+            source_(t_, X[c], Y[c], Z[c], rates);
+            Phi[c] += dt * rates[0];
+            for (int b = 0; b < 3; ++b) m[b][c] += dt * rates[1 + b];
+            E[c] += dt * rates[4];
+        }
+        const bool empty = Phi[c] <= Phi_vac;
+        const double inv = empty ? 0.0 : 1.0 / Phi[c];
+        const double ux = m[0][c] * inv, uz = m[2][c] * inv;
+        u[0][c] = ca * ux - sa * uz;
+        u[1][c] = m[1][c] * inv;
+        u[2][c] = sa * ux + ca * uz;
+        T[c] = empty ? T_floor : E[c] * inv;
+    });
 }
 
 }  // namespace granseg

@@ -114,6 +114,30 @@ private:
         long hi_at(int i) const { return i == last ? last_hi : hi; }
     };
     AxisRow axis_row(int axis, std::size_t row) const;
+    /// Calls body(c, i, row) for every cell c = i + nx row of every row's inside range, rows
+    /// shared among threads, the cells of a row vectorised (body masks outside cells itself).
+    template <class Body>
+    void for_row_cells(int axis, Body&& body) const {
+        const std::size_t nx = grid_.n[0];
+#pragma omp parallel for schedule(static) if (parallel_)
+        for (std::size_t r = 0; r < rows_; ++r) {
+            const AxisRow row = axis_row(axis, r);
+#pragma omp simd
+            for (int i = row_lo_[r]; i < row_hi_[r]; ++i) body(nx * r + i, i, row);
+        }
+    }
+    /// Calls body(c, i, rows) for every inside cell, with the AxisRow of each axis in rows[3].
+    template <class Body>
+    void for_inside_cells(Body&& body) const {
+        const std::size_t nx = grid_.n[0];
+#pragma omp parallel for schedule(static) if (parallel_)
+        for (std::size_t r = 0; r < rows_; ++r) {
+            AxisRow rows[3];
+            for (int a = 0; a < 3; ++a) rows[a] = axis_row(a, r);
+            for (int i = row_lo_[r]; i < row_hi_[r]; ++i)
+                if (inside_[nx * r + i]) body(nx * r + i, i, rows);
+        }
+    }
 
     void classify_faces();
     void compute_primitives();

@@ -24,31 +24,24 @@ inline double harmonic_mean(double a, double b) {
 }  // namespace
 
 void FlowSolver::diffusion_rows(int a, double r, const std::vector<double>& kappa, bool no_slip) {
-    const std::size_t nx = grid_.n[0];
     const double *Phi = Phi_.data(), *k = kappa.data();
     const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
     double *lower = lower_.data(), *diag = diag_.data(), *upper = upper_.data();
     const double Phi_vac = settings_.Phi_vacuum, wall = no_slip ? 2.0 * r : 0.0;
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t row = 0; row < rows_; ++row) {
-        const AxisRow ar = axis_row(a, row);
-#pragma omp simd
-        for (int i = row_lo_[row]; i < row_hi_[row]; ++i) {
-            const std::size_t c = nx * row + i, fl = ar.face0 + i, fu = fl + ar.face_step;
-            const bool active = in[c] && Phi[c] > Phi_vac;
-            const bool in_lo = kind[fl] == kInterior, in_hi = kind[fu] == kInterior;
-            const double w_lo = in_lo ? r * harmonic_mean(k[c], k[c + ar.lo_at(i)]) : wall * k[c];
-            const double w_hi = in_hi ? r * harmonic_mean(k[c], k[c + ar.hi_at(i)]) : wall * k[c];
-            lower[c] = active && in_lo ? w_lo : 0.0;
-            upper[c] = active && in_hi ? w_hi : 0.0;
-            diag[c] = active ? Phi[c] + w_lo + w_hi : 1.0;
-        }
-    }
+    for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+        const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
+        const bool active = in[c] && Phi[c] > Phi_vac;
+        const bool in_lo = kind[fl] == kInterior, in_hi = kind[fu] == kInterior;
+        const double w_lo = in_lo ? r * harmonic_mean(k[c], k[c + ar.lo_at(i)]) : wall * k[c];
+        const double w_hi = in_hi ? r * harmonic_mean(k[c], k[c + ar.hi_at(i)]) : wall * k[c];
+        lower[c] = active && in_lo ? w_lo : 0.0;
+        upper[c] = active && in_hi ? w_hi : 0.0;
+        diag[c] = active ? Phi[c] + w_lo + w_hi : 1.0;
+    });
     lines_.factor(grid_, a, lower_, diag_, upper_);
 }
 
 void FlowSolver::implicit_viscosity(double dt) {
-    const std::size_t nx = grid_.n[0];
     const double Phi_vac = settings_.Phi_vacuum;
     for (int a = 0; a < 3; ++a) {
         if (!active_[a]) continue;
@@ -61,19 +54,13 @@ void FlowSolver::implicit_viscosity(double dt) {
             const double *Phi = Phi_.data(), *u = u_[b].data(), *eta = eta_.data();
             const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
             double* rhs = work_.data();
-#pragma omp parallel for schedule(static) if (parallel_)
-            for (std::size_t row = 0; row < rows_; ++row) {
-                const AxisRow ar = axis_row(a, row);
-#pragma omp simd
-                for (int i = row_lo_[row]; i < row_hi_[row]; ++i) {
-                    const std::size_t c = nx * row + i, fl = ar.face0 + i, fu = fl + ar.face_step;
-                    const bool active = in[c] && Phi[c] > Phi_vac;
-                    double value = Phi[c] * u[c];
-                    if (kind[fl] == kWallBelow && ar.lo_at(i) == 0) value += U_lo * eta[c];
-                    if (kind[fu] == kWallAbove && ar.hi_at(i) == 0) value += U_hi * eta[c];
-                    rhs[c] = active ? value : 0.0;
-                }
-            }
+            for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+                const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
+                double value = Phi[c] * u[c];
+                if (kind[fl] == kWallBelow && ar.lo_at(i) == 0) value += U_lo * eta[c];
+                if (kind[fu] == kWallAbove && ar.hi_at(i) == 0) value += U_hi * eta[c];
+                rhs[c] = in[c] && Phi[c] > Phi_vac ? value : 0.0;
+            });
             lines_.solve(work_);
             u_[b].swap(work_);
         }
