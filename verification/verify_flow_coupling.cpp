@@ -130,9 +130,7 @@ void packing_follows_phi(CheckTable& table, const Material& m) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const Material m = verify::flow_program(argc, argv).material;
     CheckTable table("Sect. 2.1 flow: hand-over to the segregation solver (coupling contract)");
     drum_handover(table, m);
     packing_follows_phi(table, m);

@@ -105,9 +105,7 @@ bool in_bed(const Material& m, double Phi) { return Phi >= 0.5 * m.packing.Phi_c
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const auto [options, m] = verify::flow_program(argc, argv);
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0), theta_mu = std::atan(mu) * 180.0 / M_PI;
     CheckTable table("Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)");
 

@@ -179,9 +179,7 @@ Errors run(const Material& m, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const auto [options, m] = verify::flow_program(argc, argv);
     CheckTable table("Sect. 2.1 flow (e): order of accuracy, manufactured solution of the full system");
     DataTable data({"n", "h", "error_Phi", "error_u", "error_T"});
     const int sizes[] = {16, 32, 64, 128};

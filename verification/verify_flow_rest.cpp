@@ -117,9 +117,7 @@ double mass_bound(double steps) { return steps * DBL_EPSILON; }
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const auto [options, m] = verify::flow_program(argc, argv);
     CheckTable table("Sect. 2.1 flow (a): bed at rest under gravity");
     DataTable history({"t", "max_momentum"});
     DataTable profiles({"nz", "z", "Phi", "Phi_reference"});

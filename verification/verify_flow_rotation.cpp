@@ -177,9 +177,7 @@ void scenes(CheckTable& table) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const auto [options, m] = verify::flow_program(argc, argv);
     CheckTable table("Sect. 2.1/4.2 flow (d): rotating frame, 3-D slab, mass in every scene");
     DataTable history({"t", "max_speed", "max_T"});
     rigid_rotation(table, m, history);

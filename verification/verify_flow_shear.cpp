@@ -79,9 +79,7 @@ Shear run(const Material& m, double Phi, double gamma_dot, double T0, double t_e
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const auto [options, m] = verify::flow_program(argc, argv);
     CheckTable table("Sect. 2.1 flow (b): homogeneous simple shear (eq. 45)");
     const double co = m.packing.Phi_co(FlowSettings{}.phi_hat);
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0);

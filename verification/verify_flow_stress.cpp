@@ -92,9 +92,7 @@ FlowSolver boxes(const Material& m, const std::function<int(double, double)>& bl
 }  // namespace
 
 int main(int argc, char** argv) {
-    verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
-    const Material m = Material::glass_substitute();
+    const Material m = verify::flow_program(argc, argv).material;
     const FlowSettings s;
     const double rcp = m.packing.Phi_rcp(s.phi_hat);
     CheckTable table("Sect. 2.1 flow: stress cases (sharp interfaces, T = 0, Phi -> Phi_rcp, sudden rotation)");

@@ -57,8 +57,7 @@ std::vector<std::vector<double>> rows(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto options = verify::parse_program_options(argc, argv);
-    verify::use_one_thread();
+    const auto [options, m] = verify::flow_program(argc, argv);
     CheckTable table("Sect. 4.2 tumbler-flow, 32 cells per diameter, 25 s");
     const std::string dir = options.data_dir + "/flow_tumbler";
     const std::string scene = "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 32\n"
@@ -103,7 +102,6 @@ int main(int argc, char** argv) {
     table.at_most("localised flow: max speed 5 cm deep / top centimetre", core / surface, kCoreShare);
 
     const auto summary = rows(dir + "/summary.dat");  // t_end steps angle_mean angle_std samples mass_change
-    const Material m = Material::glass_substitute();
     const double friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
     table.note("dynamic angle of repose " + verify::format(summary[0][2]) + " +- " + verify::format(summary[0][3]) +
                " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " + verify::format(friction) + " deg");

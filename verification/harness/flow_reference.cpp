@@ -87,7 +87,11 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
     return Phi;
 }
 
-void use_one_thread() { omp_set_num_threads(1); }
+FlowProgram flow_program(int argc, char** argv) {
+    ProgramOptions options = parse_program_options(argc, argv);
+    omp_set_num_threads(1);
+    return {options, Material::glass_substitute()};
+}
 
 double max_momentum(const FlowSolver& s) {
     double worst = 0.0;

@@ -6,6 +6,7 @@
 
 #include "closures/material.hpp"
 #include "flow/flow_solver.hpp"
+#include "harness/program.hpp"
 
 #include <functional>
 #include <vector>
@@ -27,9 +28,14 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
                                         double Phi_co, double g, double mass, const std::vector<double>& z,
                                         double* surface = nullptr);
 
-/// Runs the flow solver on one OpenMP thread: `make verify` runs two programs at a time on the
+/// The start of every flow verification program: its command line, and the substitute material.
+/// The solver runs on one OpenMP thread: `make verify` runs two programs at a time on the
 /// machine's two cores, and a second, spinning thread per program would only contend for them.
-void use_one_thread();
+struct FlowProgram {
+    ProgramOptions options;
+    Material material;
+};
+FlowProgram flow_program(int argc, char** argv);
 
 /// Largest |Phi u| over inside cells (the momentum density, m/s).
 double max_momentum(const FlowSolver& s);
