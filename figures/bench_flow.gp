@@ -13,7 +13,8 @@ set ylabel "Mcell-updates/s"
 set logscale x
 set xrange [40:250]
 set key bottom left
-plot f u ($2 == 1 ? $1 : 1/0):4 w lp pt 7 t "1 thread", f u ($2 == 2 ? $1 : 1/0):4 w lp pt 5 t "2 threads"
+# rows alternate: 1 thread, 2 threads
+plot f every 2::0 u 1:4 w lp pt 7 t "1 thread", f every 2::1 u 1:4 w lp pt 5 t "2 threads"
 set title "(b) time step and estimated wall time for 25 s"
 set ylabel "dt [s]"
 set y2label "wall time for 25 s [s]"
@@ -21,10 +22,11 @@ set logscale y
 set logscale y2
 set ytics nomirror
 set y2tics
-set key top right
-plot f u ($2 == 1 ? $1 : 1/0):5 w lp pt 7 t "dt (CFL 0.9 on |u|+c)", \
-     f u ($2 == 1 ? $1 : 1/0):7 axes x1y2 w lp pt 6 t "25 s, 1 thread", \
-     f u ($2 == 2 ? $1 : 1/0):7 axes x1y2 w lp pt 4 t "25 s, 2 threads", 60 axes x1y2 w l dt 2 lc rgb "black" t "target 60 s"
+set key bottom left
+set y2range [10:1e4]
+plot f every 2::0 u 1:5 w lp pt 7 t "dt (CFL 0.9 on |u|+c)", \
+     f every 2::0 u 1:7 axes x1y2 w lp pt 6 t "25 s, 1 thread", \
+     f every 2::1 u 1:7 axes x1y2 w lp pt 4 t "25 s, 2 threads", 60 axes x1y2 w l dt 2 lc rgb "black" t "target 60 s"
 unset logscale y
 unset logscale y2
 unset y2tics
@@ -41,6 +43,6 @@ set yrange [0:1]
 set xlabel "cells per diameter"
 set ylabel "share"
 set key outside right
-plot f u ($2 == 1 ? $8 : 1/0):xtic(1) t "closures", '' u ($2 == 1 ? $9 : 1/0) t "convection", \
-     '' u ($2 == 1 ? $10 : 1/0) t "viscosity", '' u ($2 == 1 ? $11 : 1/0) t "temperature"
+plot f every 2::0 u 8:xtic(1) t "closures", '' every 2::0 u 9 t "convection", \
+     '' every 2::0 u 10 t "viscosity", '' every 2::0 u 11 t "temperature"
 unset multiplot

@@ -20,14 +20,17 @@ set title "(b) 18 deg: the flow stops; creep left by T_floor"
 set xlabel "u_x [m/s]"
 set ylabel "z [m]"
 set key top left
-set format x "%.0e"
-plot datadir.'/flow_incline_below.dat' u 4:2 w l lw 2 lc rgb "#999999" t "tan(theta) sqrt(T_floor) z / eta0", \
+set format x "%.1e"
+set xtics 1e-5
+plot datadir.'/flow_incline_below.dat' index 1 u ($4 > 0 ? $4 : 1/0):2 w l lw 2 lc rgb "#999999" t "tan(theta) sqrt(T_floor) z / eta0", \
      for [i=0:1] datadir.'/flow_incline_below.dat' index i u 3:2 w p pt 7+i t sprintf("solver, %s cells", word("40 80", i+1))
 set format x "%g"
-set title "(c) at the critical angle: u and T against the BVP (uniform T)"
+set xtics autofreq
+set title "(c) critical angle: u, T against the BVP (uniform T)"
 set xlabel "u_x [m/s]   and   1000 T [m^2/s^2]"
+set key top left Left reverse samplen 1 font ",9"
 plot for [i=0:1] datadir.'/flow_incline_profiles.dat' index i u ($3 > 0.3 ? $5 : 1/0):2 w p pt 7+i t sprintf("u, %s cells", word("32 64", i+1)), \
-     datadir.'/flow_incline_profiles.dat' index 1 u ($3 > 0.3 ? $6 : 1/0):2 w l lw 2 lc rgb "#999999" t "u, BVP", \
+     datadir.'/flow_incline_profiles.dat' index 1 u ($3 > 0.3 && $6 > 0 ? $6 : 1/0):2 w l lw 2 lc rgb "#999999" t "u, BVP", \
      for [i=0:1] datadir.'/flow_incline_profiles.dat' index i u ($3 > 0.3 ? 1000*$7 : 1/0):2 w p pt 4+i t sprintf("1000 T, %s cells", word("32 64", i+1)), \
      datadir.'/flow_incline_profiles.dat' index 1 u ($3 > 0.3 ? 1000*$8 : 1/0):2 w l lw 2 dt 2 lc rgb "#999999" t "1000 T, BVP (mean)"
 unset multiplot

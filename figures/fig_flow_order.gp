@@ -3,7 +3,7 @@
 # Data: flow_order.dat (n h error_Phi error_u error_T).
 set terminal pngcairo size 800,600 font "Sans,11" noenhanced
 set output outfile
-set title "Flow (e): mean |error| at t = 0.05 s, manufactured solution (rotating frame, gravity, walls)"
+set title "Flow (e): mean |error| at t = 0.05 s, manufactured solution (frame turning at 20 rad/s, gravity, walls)"
 set grid
 set logscale xy
 set format y "%.0e"

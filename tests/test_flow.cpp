@@ -4,6 +4,9 @@
 #include "flow/frame.hpp"
 #include "flow/hllc.hpp"
 #include "flow/line_solver.hpp"
+#include "core/error.hpp"
+#include "core/scene_file.hpp"
+#include "scenes/flow_scenes.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -142,6 +145,35 @@ BOOST_AUTO_TEST_CASE(drum_grid_covers_the_circle) {
     std::size_t inside = 0;
     for (std::size_t c = 0; c < g.cells(); ++c) inside += g.is_inside(c) ? 1 : 0;
     BOOST_TEST(std::fabs(inside * g.h[0] * g.h[2] / (M_PI * 0.05 * 0.05) - 1.0) < 1e-2);
+}
+
+/// The message of the InputError that preparing `toml` throws ("" if none).
+std::string scene_error(const std::string& toml) {
+    const SceneFile scene = SceneFile::parse(toml, "s.toml");
+    try {
+        for (const auto& kind : scene_kinds())
+            if (kind.name == scene.choice("scene", "kind", {"bed-at-rest", "simple-shear", "inclined-plane", "tumbler-flow"}))
+                kind.prepare(scene);
+        scene.finish();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+BOOST_AUTO_TEST_CASE(flow_scenes_reject_bad_values_with_one_line) {
+    const std::string above_rcp = scene_error(
+        "[scene]\nkind = \"bed-at-rest\"\n[grid]\nnz = 10\nheight = 0.01\n[bed]\nPhi = 0.7\n[run]\nt_end = 1\n");
+    BOOST_TEST(above_rcp.find("[bed] Phi") != std::string::npos);
+    BOOST_TEST(above_rcp.find('\n') == std::string::npos);
+    const std::string angle = scene_error("[scene]\nkind = \"tumbler-flow\"\n[run]\nt_end = 5\nangle_from = 6\n");
+    BOOST_TEST(angle.find("[run] angle_from") != std::string::npos);
+    const std::string typo = scene_error(
+        "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 10\nheight = 0.01\n[shear]\nU = 1\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\ncfl_number = 0.5\n");
+    BOOST_TEST(typo.find("cfl_number") != std::string::npos);
+    const std::string floor = scene_error(
+        "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 10\nheight = 0.01\n[plane]\nangle_deg = 20\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\nT_floor = 0\n");
+    BOOST_TEST(floor.find("[flow] T_floor") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

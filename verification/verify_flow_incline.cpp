@@ -137,6 +137,7 @@ int main(int argc, char** argv) {
             if (in_bed(m, r.Phi[k])) worst = std::max(worst, std::fabs(r.u[k] - creep * r.z[k]) / (creep * kDepth));
         }
         below.blank();
+        below.blank();  // gnuplot index
         creep_error[i] = worst;
         const std::string tag = "18 deg, nz = " + std::to_string(nz) + ": ";
         table.at_most(tag + "kinetic energy at 1.5 s / at 0 s", r.kinetic[1] / start.kinetic[0], kStopFactor);
@@ -181,6 +182,7 @@ int main(int argc, char** argv) {
             Phi_err = std::max(Phi_err, std::fabs(r.Phi[k] - Phi_bvp[k]));
         }
         profiles.blank();
+        profiles.blank();  // gnuplot index
         spread[i - 1] = (T_max - T_min) / T_max;
         u_errors[i - 1] = u_err, Phi_errors[i - 1] = Phi_err;
         const std::string tag = "critical angle, nz = " + std::to_string(nz) + ": ";
