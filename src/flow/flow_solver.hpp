@@ -4,8 +4,9 @@
 // Unknowns per cell (core/grid.hpp layout): Phi, Phi u (3 components), Phi T. One step (Lie
 // splitting, first order in time and space):
 //   1. primitives and closures at t^n; explicit convection with the HLLC flux and hydrostatic
-//      reconstruction (flow/hllc.hpp), dt from a CFL condition on |u_n| + c and from the cells'
-//      outflow (so Phi stays >= 0 and T, u_t stay convex combinations);
+//      reconstruction (flow/hllc.hpp); transport coefficients at the effective pressure; dt from a
+//      CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0 and T, u_t stay
+//      convex combinations) and from their compaction (so Phi stays < Phi_rcp);
 //   2. Coriolis rotation of u over dt (exact), body-force components along inactive or periodic
 //      axes as explicit sources, optional manufactured source terms;
 //   3. implicit viscosity d(Phi u)/dt = div(eta grad u), split by axis into line solves;

@@ -8,7 +8,7 @@
 // Face coefficients are harmonic means of the two cells' values, so a face between the bed and
 // near-empty air carries almost no stress or heat. The coefficients eta, lambda, eps are those of
 // the state at the start of the step (linearly implicit), at the effective pressure
-// (FlowSolver::effective_pressure). Outside and empty cells are identity rows (set once).
+// (FlowSolver::effective_pressure_and_step). Outside and empty cells are identity rows (set once).
 #include "flow/flow_solver.hpp"
 
 #include <algorithm>
