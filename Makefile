@@ -90,6 +90,11 @@ $(BUILD)/.deps-ok:
 	$(check_debian_packages)
 
 # ---- compilation -------------------------------------------------------------------------------
+# The flow solver's cell and face loops vectorise only if sqrt need not set errno and FP
+# operations may be executed speculatively (their discarded results change nothing): neither
+# flag changes a computed value (docs/flow_solver.md, performance).
+$(BUILD)/obj/src/flow/%.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
+
 $(BUILD)/obj/%.o: %.cpp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@

@@ -18,14 +18,32 @@
 
 #include "closures/material.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace granseg {
+
+/// The exponent b of g = (1 - Phi/Phi_rcp)^(-b) for the material's law (docs/assumptions.md A1).
+inline double compressibility_exponent(const Material& m, double Phi_rcp) {
+    return m.g_law == CompressibilityLaw::power ? m.beta : 2.5 * Phi_rcp;
+}
 
 /// Compressibility factor g(Phi; Phi_rcp), the substitute for the lost eq. (18): g -> 1 as
 /// Phi -> 0 and g -> inf as Phi -> Phi_rcp (docs/assumptions.md A1). +inf for Phi >= Phi_rcp.
-double compressibility_factor(const Material& m, double Phi, double Phi_rcp);
+inline double compressibility_factor(const Material& m, double Phi, double Phi_rcp) {
+    const double gap = 1.0 - Phi / Phi_rcp;
+    if (!(gap > 0.0)) return std::numeric_limits<double>::infinity();
+    const double b = compressibility_exponent(m, Phi_rcp);
+    return b == 1.0 ? 1.0 / gap : std::pow(gap, -b);
+}
 
 /// dg/dPhi at fixed Phi_rcp (for the sound speed).
-double compressibility_factor_slope(const Material& m, double Phi, double Phi_rcp);
+inline double compressibility_factor_slope(const Material& m, double Phi, double Phi_rcp) {
+    const double gap = 1.0 - Phi / Phi_rcp;
+    if (!(gap > 0.0)) return std::numeric_limits<double>::infinity();
+    const double b = compressibility_exponent(m, Phi_rcp);
+    return b == 1.0 ? 1.0 / (Phi_rcp * gap * gap) : b / Phi_rcp * std::pow(gap, -b - 1.0);
+}
 
 /// Kinetic pressure p_k = Phi g T (eq. 16).
 inline double kinetic_pressure(double Phi, double g, double T) { return Phi * g * T; }
@@ -49,6 +67,33 @@ struct ClosureValues {
     double dissipation;      // eps Phi T, the sink of eq. (14)
     double c2;               // dp/dPhi at fixed T and phi_hat: squared sound speed of eqs. (8)-(9)
 };
+
+/// Evaluates eqs. (15)-(20) at (Phi, T) with the packing limits Phi_rcp, Phi_co already known
+/// (inline, for the flow solver's cell loops; evaluate_closures calls it).
+inline ClosureValues evaluate_closures_at(const Material& m, double Phi, double T, double Phi_rcp, double Phi_co) {
+    ClosureValues v{};
+    v.Phi_rcp = Phi_rcp;
+    v.Phi_co = Phi_co;
+    v.g = compressibility_factor(m, Phi, Phi_rcp);
+
+    const double excess = yield_excess(m.T0, Phi, Phi_co);  // p_y / g
+    v.p_k = kinetic_pressure(Phi, v.g, T);                  // eq. (16)
+    v.p_y = excess * v.g;                                   // eq. (19)
+    v.p = v.p_k + v.p_y;                                    // eq. (15)
+
+    // Eqs. (17) and (20) in expanded form: eta_k (1 + p_y/p_k) = eta0 g (Phi sqrt(T) + excess/sqrt(T)).
+    const double sqrtT = std::sqrt(T);
+    const double yield_term = excess > 0.0 ? excess / sqrtT : 0.0;  // +inf at T = 0 in the yield regime
+    v.eta = m.eta0 * v.g * (Phi * sqrtT + yield_term);
+    v.lambda = m.lambda0 * v.g * (Phi * sqrtT + yield_term);
+    v.eps = m.eps0 * v.g * (sqrtT + (excess > 0.0 ? yield_term / Phi : 0.0));
+    v.dissipation = m.eps0 * v.g * sqrtT * (Phi * T + excess);
+
+    // c^2 = d/dPhi [g (Phi T + excess)] at fixed T: g' (Phi T + excess) + g (T + s T0).
+    const double dg = compressibility_factor_slope(m, Phi, Phi_rcp);
+    v.c2 = dg * (Phi * T + excess) + v.g * (T + (excess > 0.0 ? m.T0 : 0.0));
+    return v;
+}
 
 /// Evaluates eqs. (15)-(20) at (Phi, phi_hat, T) for material m.
 ClosureValues evaluate_closures(const Material& m, double Phi, double phi_hat, double T);

@@ -1,0 +1,30 @@
+// Geometry and initial states of granular beds for the flow scenes: the circular drum of
+// Sect. 4.2 as embedded walls, and a bed at rest in the static (lithostatic) balance
+// dp/dz = -Phi |g| with p = p(Phi, T) from eqs. (15)-(19) (docs/assumptions.md F6).
+#pragma once
+
+#include "closures/material.hpp"
+#include "core/grid.hpp"
+
+#include <vector>
+
+namespace granseg {
+
+/// A grid of n x n cells (times ny periodic cells along y of length ly; ny = 1: the x-z plane)
+/// covering the square around a drum of radius R centred at the origin; cells whose centre
+/// lies inside the circle are inside, the rest are walls (a staircase circle).
+Grid drum_grid(int n, double R, int ny = 1, double ly = 1.0);
+
+/// Volume fraction at pressure p >= 0 and temperature T: the inverse of p(Phi) of eqs. (15)-(19)
+/// on [0, Phi_rcp) (p is increasing in Phi), by bisection to round-off.
+double volume_fraction_at_pressure(const Material& m, double p, double T, double Phi_rcp, double Phi_co);
+
+/// Phi per cell of a bed at rest filling every inside cell below the horizontal surface
+/// z = z_surface under gravity |g| along -z, at temperature T: the lithostatic pressure
+/// p(z) from dp/dz = -Phi(p) |g|, p(z_surface) = 0, integrated column by column (RK4, 16 steps per
+/// cell), Phi = Phi(p) at the cell centre; the cell holding the surface gets the filled fraction
+/// of its height times that value. Cells above the surface are empty.
+std::vector<double> lithostatic_bed(const Grid& grid, const Material& m, double z_surface, double gravity, double T,
+                                    double Phi_rcp, double Phi_co);
+
+}  // namespace granseg

@@ -1,0 +1,54 @@
+// Running the flow solver in a scene and writing what it computed: progress and the mass
+// invariant, gnuplot tables of fields and profiles, legacy VTK files for ParaView, and the
+// diagnostics of a rotating drum (free-surface angle, flowing and resting material).
+#pragma once
+
+#include "core/output.hpp"
+#include "flow/flow_solver.hpp"
+
+#include <functional>
+#include <string>
+
+namespace granseg {
+
+/// Relative change of the total mass that breaks the mass invariant: each step rounds every
+/// cell's update once (relative error <= 2^-53 of Phi), so after n steps the drift is below
+/// n * 2^-53 * (cells * max Phi / mass); runs of up to 10^7 steps stay far below 1e-8.
+constexpr double kMassDriftLimit = 1e-8;
+
+/// Steps `solver` to t_end, printing progress with an ETA on stderr for long runs, calling
+/// `after_step` (if given) after every step, and throwing InvariantError if the mass drifts by
+/// more than kMassDriftLimit.
+void advance_flow(FlowSolver& solver, double t_end, const std::string& label,
+                  const std::function<void()>& after_step = {});
+
+/// Cell fields of the slice j = 0, one gnuplot block per row of x (blank lines between rows):
+/// x z Phi u_x u_y u_z T p inside, in the frame of the solver (lab = false) or with positions
+/// and velocities turned back to the lab frame (lab = true, Frame::to_lab_*). Outside cells have
+/// Phi = u = T = p = 0 and inside = 0.
+DataTable flow_field_table(const FlowSolver& solver, bool lab);
+
+/// Profiles along z of a column (nx = ny = 1): z Phi u_x u_z T p (the closures' pressure).
+DataTable flow_column_table(const FlowSolver& solver);
+
+/// Legacy VTK (ASCII STRUCTURED_GRID) of the slice j = 0 in the lab frame at the solver's time:
+/// points are the cell corners turned by Frame::to_lab_position, cell data Phi, T, p, inside and
+/// the lab-frame velocity.
+std::string flow_vtk(const FlowSolver& solver);
+
+/// Drum diagnostics in the solver's (rotating) frame.
+struct DrumState {
+    double surface_angle_deg;  // angle of the free surface against the horizontal, > 0 when it
+                               // rises in the direction the drum turns (counter-clockwise)
+    int surface_points;        // crossings of Phi = Phi_level used for the fit
+    double flowing_fraction;   // share of the granular mass moving faster than v_flow relative to the drum
+    double max_speed;          // m/s, largest |u| relative to the drum over cells with Phi > Phi_level
+    double kinetic_energy;     // sum of Phi |u|^2 / 2 times the cell volume (rho* = 1)
+};
+
+/// Fits a line (total least squares) through the points where Phi crosses Phi_level between
+/// neighbouring inside cells within `radius` of the axis, and compares it with the horizontal
+/// (perpendicular to gravity at the solver's time).
+DrumState drum_state(const FlowSolver& solver, double Phi_level, double radius, double v_flow);
+
+}  // namespace granseg

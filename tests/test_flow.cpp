@@ -1,0 +1,179 @@
+// Building blocks of the flow solver (src/flow/): the HLLC flux, the hydrostatic reconstruction,
+// the batched line solver, the rotating frame and the drum geometry.
+#include "flow/bed.hpp"
+#include "flow/frame.hpp"
+#include "flow/hllc.hpp"
+#include "flow/line_solver.hpp"
+#include "core/error.hpp"
+#include "core/scene_file.hpp"
+#include "scenes/flow_scenes.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+
+using namespace granseg;
+namespace tt = boost::test_tools;
+
+BOOST_AUTO_TEST_SUITE(flow)
+
+BOOST_AUTO_TEST_CASE(hllc_of_equal_states_is_the_physical_flux) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(-1.0, 1.0), P(0.0, 1.0);
+    for (int i = 0; i < 200; ++i) {
+        const FaceState s{0.6 * P(rng), U(rng), U(rng), U(rng), P(rng), P(rng), 0.1 + 5 * P(rng)};
+        const FaceFlux F = hllc_flux(s, s);
+        const double mass = s.Phi * s.u_n;
+        BOOST_TEST(F.mass == mass, tt::tolerance(1e-12));
+        BOOST_TEST(F.mom_n == mass * s.u_n + s.p, tt::tolerance(1e-12));
+        BOOST_TEST(F.mom_t1 == mass * s.u_t1, tt::tolerance(1e-12));
+        BOOST_TEST(F.energy == mass * s.T, tt::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(hllc_against_a_mirror_state_is_a_wall) {
+    const FaceState s{0.6, 0.3, 0.2, 0.0, 1e-4, 0.2, 4.0};  // moving towards the wall at 0.3 m/s
+    const FaceFlux F = hllc_flux(s, mirror(s));
+    BOOST_TEST(F.mass == 0.0);
+    BOOST_TEST(F.energy == 0.0);
+    BOOST_TEST(F.mom_t1 == 0.0);
+    BOOST_TEST(F.mom_n == s.p + s.Phi * s.u_n * (std::fabs(s.u_n) + s.c + s.u_n), tt::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(hllc_keeps_a_contact_at_rest) {
+    // Equal pressure, no velocity, different Phi and T: no mass crosses (the contact is resolved).
+    const FaceState L{0.62, 0.0, 0.1, 0.0, 1e-8, 0.3, 5.0}, R{0.55, 0.0, -0.2, 0.0, 1e-3, 0.3, 0.8};
+    const FaceFlux F = hllc_flux(L, R);
+    BOOST_TEST(F.mass == 0.0);
+    BOOST_TEST(F.mom_n == 0.3);
+}
+
+BOOST_AUTO_TEST_CASE(empty_sides_give_no_flux) {
+    const FaceState vacuum{0.0, 0.0, 0.0, 0.0, 1e-12, 0.0, 1e-6};
+    const FaceFlux F = hllc_flux(vacuum, vacuum);
+    BOOST_TEST(F.mass == 0.0);
+    BOOST_TEST(F.mom_n == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(hydrostatic_reconstruction_bounds) {
+    // Uphill: pressure drops by the cell's weight, 0 <= Phi' <= Phi; downhill: it rises, Phi' = Phi.
+    FaceState up{0.6, 0.0, 0.0, 0.0, 1e-8, 0.05, 5.0};
+    const double drop = hydrostatic_reconstruction(up, 0.01, 0.0, 0.0);
+    BOOST_TEST(up.p == 0.05 - 0.6 * 0.01, tt::tolerance(1e-14));
+    BOOST_TEST(drop == 0.6 * 0.01, tt::tolerance(1e-14));
+    BOOST_TEST(up.Phi <= 0.6);
+    BOOST_TEST(up.Phi >= 0.0);
+    FaceState cold{0.3, 0.0, 0.0, 0.0, 1e-12, 1e-12, 1e-6};  // a partly filled cell: clipped to 0
+    hydrostatic_reconstruction(cold, 0.005, 0.0, 0.0);
+    BOOST_TEST(cold.p == 0.0);
+    FaceState down{0.6, 0.0, 0.0, 0.0, 1e-8, 0.05, 5.0};
+    const double rise = hydrostatic_reconstruction(down, -0.01, 0.002, 0.0);
+    BOOST_TEST(down.p == 0.05 + 0.6 * 0.01 + 0.002, tt::tolerance(1e-14));
+    BOOST_TEST(rise == -(0.6 * 0.01 + 0.002), tt::tolerance(1e-14));
+    BOOST_TEST(down.Phi == 0.6);
+    BOOST_TEST(unsupported_load(0.3, 1e-12, 0.005) == 0.3 * 0.005 - 1e-12, tt::tolerance(1e-14));
+}
+
+/// Solves the lines of a grid with LineSolver and compares each line with a dense solve.
+double line_solver_error(Grid g, int axis, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> W(0.0, 5.0), R(-1.0, 1.0);
+    const std::size_t cells = g.cells();
+    std::vector<double> lower(cells), diag(cells), upper(cells), x(cells);
+    for (std::size_t c = 0; c < cells; ++c) lower[c] = W(rng), upper[c] = W(rng), diag[c] = 1.0 + lower[c] + upper[c] + W(rng), x[c] = R(rng);
+    const std::vector<double> rhs = x;
+    LineSolver solver;
+    solver.factor(g, axis, lower, diag, upper);
+    solver.solve(x);
+    // Dense check, line by line: diag x - lower x_prev - upper x_next = rhs (periodic wrap).
+    const int n = g.n[axis];
+    const std::size_t stride = g.stride(axis);
+    double worst = 0.0;
+    for (std::size_t c0 = 0; c0 < cells; ++c0) {
+        if ((c0 / stride) % n != 0) continue;  // line starts
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+        Eigen::VectorXd b(n), y(n);
+        for (int m = 0; m < n; ++m) {
+            const std::size_t c = c0 + m * stride;
+            A(m, m) += diag[c];
+            if (m > 0) A(m, m - 1) -= lower[c];
+            else if (g.periodic[axis]) A(m, n - 1) -= lower[c];
+            if (m < n - 1) A(m, m + 1) -= upper[c];
+            else if (g.periodic[axis]) A(m, 0) -= upper[c];
+            b(m) = rhs[c], y(m) = x[c];
+        }
+        worst = std::max(worst, (A.partialPivLu().solve(b) - y).cwiseAbs().maxCoeff());
+    }
+    return worst;
+}
+
+BOOST_AUTO_TEST_CASE(line_solver_matches_dense_solves) {
+    Grid g = Grid::plane_xz(7, 6, 0, 0, 1, 1);
+    g.n[1] = 5;
+    BOOST_TEST(line_solver_error(g, 0, 1) < 1e-13);
+    BOOST_TEST(line_solver_error(g, 1, 2) < 1e-13);
+    BOOST_TEST(line_solver_error(g, 2, 3) < 1e-13);
+    for (int n : {2, 3, 5}) {  // periodic: merged faces (2) and Sherman-Morrison (3, 5)
+        Grid p = Grid::plane_xz(4, 3, 0, 0, 1, 1);
+        p.n[1] = n;
+        p.periodic[1] = true;
+        BOOST_TEST(line_solver_error(p, 1, 10 + n) < 1e-13);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(frame_turns_gravity_and_lab_velocities) {
+    Frame f;
+    f.omega = 0.5;
+    const Vec3 g0 = f.gravity_at(0.0);
+    BOOST_TEST(g0[0] == 0.0);
+    BOOST_TEST(g0[2] == -9.81);
+    // The drum turns counter-clockwise: after a quarter turn gravity points along -x in its frame.
+    const Vec3 g = f.gravity_at(0.5 * M_PI / f.omega);
+    BOOST_TEST(g[0] == -9.81, tt::tolerance(1e-12));
+    BOOST_TEST(std::fabs(g[2]) < 1e-12);
+    // A point at rest in the drum's frame moves with Omega x r in the lab.
+    const auto v = f.to_lab_velocity(0.0, 0.02, 0.0, 0.0, 0.0);
+    BOOST_TEST(std::fabs(v[0]) < 1e-15);
+    BOOST_TEST(v[1] == 0.5 * 0.02, tt::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(drum_grid_covers_the_circle) {
+    const Grid g = drum_grid(100, 0.05);
+    std::size_t inside = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) inside += g.is_inside(c) ? 1 : 0;
+    BOOST_TEST(std::fabs(inside * g.h[0] * g.h[2] / (M_PI * 0.05 * 0.05) - 1.0) < 1e-2);
+}
+
+/// The message of the InputError that preparing `toml` throws ("" if none).
+std::string scene_error(const std::string& toml) {
+    const SceneFile scene = SceneFile::parse(toml, "s.toml");
+    try {
+        for (const auto& kind : scene_kinds())
+            if (kind.name == scene.choice("scene", "kind", {"bed-at-rest", "simple-shear", "inclined-plane", "tumbler-flow"}))
+                kind.prepare(scene);
+        scene.finish();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+BOOST_AUTO_TEST_CASE(flow_scenes_reject_bad_values_with_one_line) {
+    const std::string above_rcp = scene_error(
+        "[scene]\nkind = \"bed-at-rest\"\n[grid]\nnz = 10\nheight = 0.01\n[bed]\nPhi = 0.7\n[run]\nt_end = 1\n");
+    BOOST_TEST(above_rcp.find("[bed] Phi") != std::string::npos);
+    BOOST_TEST(above_rcp.find('\n') == std::string::npos);
+    const std::string angle = scene_error("[scene]\nkind = \"tumbler-flow\"\n[run]\nt_end = 5\nangle_from = 6\n");
+    BOOST_TEST(angle.find("[run] angle_from") != std::string::npos);
+    const std::string typo = scene_error(
+        "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 10\nheight = 0.01\n[shear]\nU = 1\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\ncfl_number = 0.5\n");
+    BOOST_TEST(typo.find("cfl_number") != std::string::npos);
+    const std::string floor = scene_error(
+        "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 10\nheight = 0.01\n[plane]\nangle_deg = 20\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\nT_floor = 0\n");
+    BOOST_TEST(floor.find("[flow] T_floor") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,46 @@
+// Independent references shared by the flow verification programs (verify_flow_*.cpp): the
+// equation of state inverted with GSL's Brent root finder, the lithostatic balance
+// dp/ds = Phi(p) |g| integrated with GSL odeiv2, and small helpers to set up and run a column.
+// Nothing here calls the solver's own inversion (flow/bed.cpp) or its discrete equilibrium.
+#pragma once
+
+#include "closures/material.hpp"
+#include "flow/flow_solver.hpp"
+#include "harness/program.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace granseg::verify {
+
+/// Phi with p(Phi, T) = p on [0, Phi_rcp) (0 for p <= 0), GSL Brent.
+double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, double Phi_co);
+
+/// Lithostatic column of mass `mass` per area (m) at temperature T under gravity g (m/s^2): the
+/// bottom carries the whole weight, p(0) = g mass, and dp/dz = -g Phi(p) is integrated upwards
+/// with gsl_odeiv2 (RK8(9) Prince-Dormand, relative tolerance 1e-12) through the dense and the
+/// kinetic branch of p(Phi). Returns Phi at the heights z (increasing); the dense part ends where
+/// p falls to p(Phi_co), and `surface` receives the last z below that.
+std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g,
+                                        double mass, const std::vector<double>& z, double* surface = nullptr);
+/// The same with a temperature that varies with height, T(z).
+std::vector<double> lithostatic_profile(const Material& m, const std::function<double(double)>& T_of_z, double Phi_rcp,
+                                        double Phi_co, double g, double mass, const std::vector<double>& z,
+                                        double* surface = nullptr);
+
+/// The start of every flow verification program: its command line, and the substitute material.
+/// The solver runs on one OpenMP thread: `make verify` runs two programs at a time on the
+/// machine's two cores, and a second, spinning thread per program would only contend for them.
+struct FlowProgram {
+    ProgramOptions options;
+    Material material;
+};
+FlowProgram flow_program(int argc, char** argv);
+
+/// Largest |Phi u| over inside cells (the momentum density, m/s).
+double max_momentum(const FlowSolver& s);
+
+/// Sum over inside cells of Phi times cell volume, in long double (a reference for round-off).
+long double exact_mass(const FlowSolver& s);
+
+}  // namespace granseg::verify

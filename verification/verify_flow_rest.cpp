@@ -1,0 +1,156 @@
+// Verification (a) of the flow solver (Sect. 2.1, eqs. 8, 9, 14): a bed at rest under gravity.
+//
+// A column (and a 2-D box with side walls) starts with a uniform Phi, not in balance, at rest,
+// and settles. Checked against independent expectations:
+//   - Phi(z) converges to the lithostatic balance dp/dz = -Phi |g| (p from eqs. 15-19), integrated
+//     by GSL odeiv2 for the same mass (harness/flow_reference.cpp), with the error falling at the
+//     second order the trapezoidal discrete balance of the hydrostatic reconstruction implies;
+//   - the momentum decays to round-off level (the scheme is well balanced);
+//   - the mass is unchanged to round-off (a conservation law; no flux through walls);
+//   - in the box, Phi does not depend on x and the horizontal momentum stays at round-off.
+// Writes flow_rest_profiles.dat and flow_rest_history.dat for figures/fig_flow_rest.gp.
+//
+// Run: build/verification/verify_flow_rest [--data DIR]   (a few seconds)
+#include "closures/closures.hpp"
+#include "flow/flow_solver.hpp"
+#include "harness/check_table.hpp"
+#include "harness/flow_reference.hpp"
+#include "harness/program.hpp"
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+
+using namespace granseg;
+using granseg::verify::CheckTable;
+
+namespace {
+
+constexpr double kHeight = 0.06, kBedTop = 0.04, kGravity = 9.81;
+// The settling creep relaxes on the time eta/(Phi c^2) with eta ~ eta0 p/sqrt(T_floor)
+// (docs/flow_solver.md); with T_floor = 1e-8 m^2/s^2 that is below 0.1 s, so 12 s take the
+// momentum from its initial 5e-3 m/s to round-off. T_floor enters the balance only through
+// p_k = Phi g T (a relative 1e-8).
+constexpr double kTFloor = 1e-8, kSettle = 12.0;
+// A state already in balance is kept for 2 s (some 10^4 steps).
+constexpr double kBalanced = 2.0;
+// Round-off level of the momentum: 1e-13 of the settling scale Phi sqrt(|g| H) (0.37 m/s), i.e.
+// a few hundred units of double-precision resolution, room for the rounding every face adds to
+// the discrete balance each step.
+constexpr double kMomentumRoundOff = 1e-13 * 0.6 * 0.6262;  // 0.6262 = sqrt(9.81 * 0.04)
+// The discrete balance is the trapezoidal rule p_k - p_(k+1) = (Phi_k + Phi_(k+1)) |g| h/2 (flow/hllc.hpp),
+// second order: successive halvings of h must reduce the error by 2^kOrderMin at least
+// (1.7 leaves room for the pre-asymptotic coarsest grid).
+constexpr double kOrderMin = 1.7;
+// A balanced state is a fixed point up to the rounding of each update: Phi may move by a few
+// hundred units of 2^-52 at most.
+constexpr double kRowRoundOff = 256 * DBL_EPSILON;
+// The finest error must resolve the lithostatic compaction (Phi_bottom - Phi_co ~ 0.014) to 0.1%.
+constexpr double kProfileTol = 1e-3 * 0.014;
+
+struct Run {
+    std::vector<double> z, Phi;  // column: per cell; box: mean over x
+    double spread = 0.0;         // box: largest difference of Phi across a row
+    double momentum = 0.0, mass_change = 0.0, steps = 0.0;
+};
+
+Run settle(const Material& m, int nx, int nz, double t_end, DataTable* history, const std::vector<double>* initial = nullptr) {
+    Grid g = Grid::plane_xz(nx, nz, 0.0, 0.0, kHeight / nz * nx, kHeight);
+    FlowSettings s;
+    s.T_floor = kTFloor;
+    FlowSolver solver(g, m, s, Frame{});
+    // A uniform bed at rest, not in balance: Phi = Phi_co + 0.004 (p ~ 0.05 m^2/s^2) up to kBedTop
+    // (cell averages), unless an initial profile is given.
+    const double Phi0 = m.packing.Phi_co(s.phi_hat) + 0.004;
+    std::vector<double> Phi(g.cells()), T(g.cells(), kTFloor), zero(g.cells(), 0.0);
+    for (int k = 0; k < nz; ++k)
+        for (int i = 0; i < nx; ++i) {
+            const double lo = k * g.h[2], hi = lo + g.h[2];
+            Phi[g.index(i, 0, k)] = initial ? (*initial)[k] : Phi0 * std::max(0.0, std::min(hi, kBedTop) - lo) / g.h[2];
+        }
+    solver.set_state(Phi, {zero, zero, zero}, T);
+    const long double mass0 = verify::exact_mass(solver);
+    double next = 0.0;
+    Run r;
+    while (solver.time() < t_end) {
+        solver.step(t_end);
+        if (history && solver.time() >= next) {
+            history->row({solver.time(), verify::max_momentum(solver)});
+            next += 0.05;
+        }
+    }
+    for (int k = 0; k < nz; ++k) {
+        double sum = 0.0, lo = 1.0, hi = 0.0;
+        for (int i = 0; i < nx; ++i) {
+            const double v = solver.Phi()[g.index(i, 0, k)];
+            sum += v, lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        r.z.push_back(g.center(2, k));
+        r.Phi.push_back(sum / nx);
+        r.spread = std::max(r.spread, hi - lo);
+    }
+    r.momentum = verify::max_momentum(solver);
+    r.mass_change = static_cast<double>((verify::exact_mass(solver) - mass0) / mass0);
+    r.steps = static_cast<double>(solver.steps());
+    return r;
+}
+
+/// Largest |Phi - Phi_lithostatic| below the cell holding the surface (GSL reference of equal mass).
+double profile_error(const Material& m, const Run& r, DataTable& profiles, int nz) {
+    const double x = FlowSettings{}.phi_hat, h = kHeight / nz;
+    double mass = 0.0, surface = 0.0, worst = 0.0;
+    for (double v : r.Phi) mass += v * h;
+    const std::vector<double> ref = verify::lithostatic_profile(m, kTFloor, m.packing.Phi_rcp(x), m.packing.Phi_co(x),
+                                                                kGravity, mass, r.z, &surface);
+    for (std::size_t k = 0; k < r.z.size(); ++k) {
+        profiles.row({static_cast<double>(nz), r.z[k], r.Phi[k], ref[k]});
+        if (r.z[k] + 1.5 * h < surface) worst = std::max(worst, std::fabs(r.Phi[k] - ref[k]));
+    }
+    profiles.blank();
+    profiles.blank();
+    return worst;
+}
+
+/// The round-off bound of a sum updated `steps` times: each update rounds each cell once.
+double mass_bound(double steps) { return steps * DBL_EPSILON; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const auto [options, m] = verify::flow_program(argc, argv);
+    CheckTable table("Sect. 2.1 flow (a): bed at rest under gravity");
+    DataTable history({"t", "max_momentum"});
+    DataTable profiles({"nz", "z", "Phi", "Phi_reference"});
+    std::vector<double> errors, column30;
+    const int sizes[] = {15, 30, 60};
+    for (int nz : sizes) {
+        const Run r = settle(m, 1, nz, kSettle, nz == 60 ? &history : nullptr);
+        if (nz == 30) column30 = r.Phi;
+        errors.push_back(profile_error(m, r, profiles, nz));
+        const std::string tag = "column nz = " + std::to_string(nz) + ": ";
+        table.note(tag + "max |Phi - Phi_lithostatic(GSL)| below the surface cell = " + verify::format(errors.back()));
+        table.at_most(tag + "max |Phi u| after 12 s (m/s)", r.momentum, kMomentumRoundOff);
+        table.at_most(tag + "relative mass change, " + verify::format(r.steps) + " steps", std::fabs(r.mass_change),
+                      mass_bound(r.steps));
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i)
+        table.at_least("observed order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
+                       std::log2(errors[i - 1] / errors[i]), kOrderMin);
+    table.at_most("column nz = 60: max |Phi - Phi_lithostatic|", errors.back(), kProfileTol);
+
+    // A box with side walls, started from the settled nz = 30 column in every column: the walls
+    // and the x direction must keep a balanced state at rest (well balanced at walls). (Settling
+    // from a uniform state, the no-slip walls leave the partly filled surface row slightly uneven,
+    // and below the yield stress the model bed is a liquid of viscosity eta0 p/sqrt(T_floor) that
+    // levels only over many seconds; the columns above test the approach to balance.)
+    const Run box = settle(m, 6, 30, kBalanced, nullptr, &column30);
+    double change = 0.0;
+    for (int k = 0; k < 30; ++k) change = std::max(change, std::fabs(box.Phi[k] - column30[k]));
+    table.at_most("box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
+    table.at_most("box 6 x 30 (walls): spread of Phi across rows", box.spread, kRowRoundOff);
+    table.at_most("box 6 x 30 (walls): max |Phi u| after 2 s (m/s)", box.momentum, kMomentumRoundOff);
+    table.at_most("box 6 x 30 (walls): relative mass change", std::fabs(box.mass_change), mass_bound(box.steps));
+    verify::write_data(options, "flow_rest_profiles.dat", profiles);
+    verify::write_data(options, "flow_rest_history.dat", history);
+    return table.finish();
+}

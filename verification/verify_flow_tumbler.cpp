@@ -1,0 +1,110 @@
+// The tumbler-flow scene (Sect. 4.2 without segregation) on a coarse grid, 25 s: 32 cells per
+// diameter, 75 % fill, 0.1 rps, run through its scene file so that the figure comes from the same
+// code path as the full run (bench_tumbler, 100 cells per diameter). Checked:
+//   - the run completes (no NaN, no broken invariant) and the mass is conserved to round-off;
+//   - rolling regime (Froude number Omega^2 R/g = 2e-3, inside the rolling range 1e-4 .. 1e-2 of
+//     Mellmann 2001): after the first avalanche the surface flows continuously, the kinetic energy
+//     staying within a factor 100 of its largest value (in the slumping regime it falls by orders
+//     of magnitude between avalanches, 1e5 in the stick-slip runs of docs/flow_solver.md Sect. 8),
+//     and the flow is localised at the surface: the material 5 cm
+//     or more below the free surface moves relative to the drum at less than 10 % of the speed
+//     of the top centimetre;
+//   - the dynamic angle of repose (mean surface angle over 10..25 s) is not below the model's
+//     friction angle atan(mu) = atan(sqrt(2 eta0 eps0/3)) less the coarse grid's error of the
+//     critical angle (verify_flow_incline: 0.7 degrees at 16 cells per layer depth; 1 degree here).
+// Writes DIR/flow_tumbler/{fields_lab,fields_drum,history,summary}.dat for figures/fig_flow_tumbler.gp.
+//
+// Run: build/verification/verify_flow_tumbler [--data DIR]   (10-20 s)
+#include "closures/material.hpp"
+#include "harness/check_table.hpp"
+#include "harness/flow_reference.hpp"
+#include "harness/program.hpp"
+#include "scenes/scene_kind.hpp"
+
+#include <cfloat>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace granseg;
+using granseg::verify::CheckTable;
+
+namespace {
+
+constexpr double kOmega = 2.0 * M_PI * 0.1, kRadius = 0.05;
+constexpr double kAngleMargin = 1.0;      // degrees, see above
+constexpr double kRollingRange = 1e-2;    // min/max kinetic energy after the first avalanche
+constexpr double kFirstAvalanche = 3.0;   // s, the first avalanche is over (at ~1.3 s)
+constexpr double kCoreDepth = 0.05;       // m below the free surface
+constexpr double kCoreShare = 0.1;        // of the top centimetre's speed
+
+/// Rows of a data file (comment lines skipped).
+std::vector<std::vector<double>> rows(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::vector<double>> out;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream s(line);
+        std::vector<double> v;
+        for (double x; s >> x;) v.push_back(x);
+        out.push_back(v);
+    }
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const auto [options, m] = verify::flow_program(argc, argv);
+    CheckTable table("Sect. 4.2 tumbler-flow, 32 cells per diameter, 25 s");
+    const std::string dir = options.data_dir + "/flow_tumbler";
+    const std::string scene = "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 32\n"
+                              "[run]\nt_end = 25\nangle_from = 10\nvtk = false\n";
+    const std::string path = dir + ".toml";
+    {
+        std::ofstream(path) << scene;
+    }
+    run_scene_file(path, dir);
+
+    const auto history = rows(dir + "/history.dat");  // t steps angle points flowing max_speed ke mass mass_change dt
+    double mass_change = 0.0;
+    for (const auto& r : history) mass_change = std::max(mass_change, std::fabs(r[8]));
+    const double steps = history.back()[1];
+    table.at_most("relative mass change over " + verify::format(steps) + " steps", mass_change, steps * DBL_EPSILON);
+
+    double ke_min = INFINITY, ke_max = 0.0;
+    for (const auto& r : history)
+        if (r[0] >= kFirstAvalanche) ke_min = std::min(ke_min, r[6]), ke_max = std::max(ke_max, r[6]);
+    table.at_least("rolling: min / max kinetic energy after " + verify::format(kFirstAvalanche) + " s", ke_min / ke_max,
+                   kRollingRange);
+
+    // Fields in the lab frame (gravity along -z): x z Phi u_x u_y u_z T p inside. The lab velocity
+    // of a point turning with the drum is Omega x r, so the speed relative to the drum is
+    // |u_lab - Omega x r|. Depth is measured from the bed's highest point along the normal of the
+    // surface line at its last fitted angle.
+    const double angle = history.back()[2] * M_PI / 180.0, nx = -std::sin(angle), nz = std::cos(angle);
+    const auto fields = rows(dir + "/fields_lab.dat");
+    double top = -INFINITY;
+    for (const auto& r : fields)
+        if (r[8] > 0.5 && r[2] > 0.3) top = std::max(top, r[0] * nx + r[1] * nz);
+    double surface = 0.0, core = 0.0;
+    for (const auto& r : fields) {
+        if (r[8] < 0.5 || r[2] < 0.3) continue;  // inside the drum, in the bed
+        const double depth = top - (r[0] * nx + r[1] * nz);
+        const double speed = std::hypot(r[3] + kOmega * r[1], r[5] - kOmega * r[0]);
+        if (depth < 0.01) surface = std::max(surface, speed);
+        if (depth >= kCoreDepth) core = std::max(core, speed);
+    }
+    table.note("speed relative to the drum: top centimetre " + verify::format(surface) + " m/s, 5 cm or deeper " +
+               verify::format(core) + " m/s (wall speed " + verify::format(kOmega * kRadius) + " m/s)");
+    table.at_most("localised flow: max speed 5 cm deep / top centimetre", core / surface, kCoreShare);
+
+    const auto summary = rows(dir + "/summary.dat");  // t_end steps angle_mean angle_std samples mass_change
+    const double friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
+    table.note("dynamic angle of repose " + verify::format(summary[0][2]) + " +- " + verify::format(summary[0][3]) +
+               " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " + verify::format(friction) + " deg");
+    table.at_least("dynamic angle of repose - friction angle (deg)", summary[0][2] - friction, -kAngleMargin);
+    return table.finish();
+}
