@@ -12,6 +12,8 @@
 SHELL := /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# -j$(JOBS) for the sub-makes, unless the caller already runs a parallel make (its jobserver is shared).
+PAR = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 
 # The one place that lists the Debian packages the project needs.
 DEBIAN_PACKAGES := g++ make libgsl-dev libeigen3-dev libboost-test-dev \
@@ -199,10 +201,10 @@ figures: $(FIG_PNG)
 # ---- the two commands --------------------------------------------------------------------------
 # Keeps going past a program that fails to build, run or render: the summary counts it as failed.
 verify: deps
-	@$(MAKE) --no-print-directory -k -j$(JOBS) $(LIB) $(CLI) $(VERIFY_BIN) || echo "verify: some programs did not build"
+	@$(MAKE) --no-print-directory -k $(PAR) $(LIB) $(CLI) $(VERIFY_BIN) || echo "verify: some programs did not build"
 	@rm -f $(BUILD)/results/*.rc
-	@$(MAKE) --no-print-directory -k -j$(JOBS) -O run-verification || true
-	@$(MAKE) --no-print-directory -k -j$(JOBS) -O figures || true
+	@$(MAKE) --no-print-directory -k $(PAR) -O run-verification || true
+	@$(MAKE) --no-print-directory -k $(PAR) -O figures || true
 	@$(MAKE) --no-print-directory verify-summary
 
 verify-summary:
@@ -220,7 +222,7 @@ verify-summary:
 	[ $$fail = 0 ]
 
 test: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(TEST_BIN)
+	@$(MAKE) --no-print-directory $(PAR) $(TEST_BIN)
 	@$(MAKE) --no-print-directory test-run
 
 test-run:
@@ -243,24 +245,24 @@ run-bench: $(BENCH_BIN:$(BUILD)/bench/%=$(BUILD)/bench-results/%.rc)
 
 # Benchmarks run one after another: timings taken while another benchmark runs are worthless.
 bench: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(LIB) $(CLI) $(BENCH_BIN)
+	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH_BIN)
 	@rm -f $(BUILD)/bench-results/*.rc
 	@$(MAKE) --no-print-directory -j1 run-bench
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BENCH_PNG)
+	@$(MAKE) --no-print-directory $(PAR) $(BENCH_PNG)
 
 figures-full: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(FULL_PNG)
+	@$(MAKE) --no-print-directory $(PAR) $(FULL_PNG)
 
 # ---- sanitizers --------------------------------------------------------------------------------
 # A separate build tree; runs the unit tests and every verification program (no figures).
 SAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 sanitize: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=$(BUILD)/sanitize OPT="$(SAN_FLAGS)" \
+	@$(MAKE) --no-print-directory $(PAR) BUILD=$(BUILD)/sanitize OPT="$(SAN_FLAGS)" \
 	    EXTRA_LDFLAGS="-fsanitize=address,undefined" $(BUILD)/sanitize/tests/unit_tests \
 	    $(patsubst $(BUILD)/%,$(BUILD)/sanitize/%,$(VERIFY_BIN) $(CLI))
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize test-run
 	@rm -f $(BUILD)/sanitize/results/*.rc
-	@$(MAKE) --no-print-directory -j$(JOBS) -O BUILD=$(BUILD)/sanitize OPT="$(SAN_FLAGS)" \
+	@$(MAKE) --no-print-directory $(PAR) -O BUILD=$(BUILD)/sanitize OPT="$(SAN_FLAGS)" \
 	    EXTRA_LDFLAGS="-fsanitize=address,undefined" GRANSEG_SANITIZE=1 run-verification
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize FIG_PNG= verify-summary
 
