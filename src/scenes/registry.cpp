@@ -2,6 +2,7 @@
 #include "scenes/closure_sweep.hpp"
 #include "scenes/scene_kind.hpp"
 #include "scenes/segregation1d.hpp"
+#include "scenes/tumbler_kinematic.hpp"
 
 namespace granseg {
 
@@ -9,6 +10,8 @@ const std::vector<SceneKind>& scene_kinds() {
     static const std::vector<SceneKind> kinds = {
         {"closure-sweep", "tabulate the Sect. 2.1 closures against Phi for a material", prepare_closure_sweep},
         {"segregation1d", "the 1-D segregation column of Sect. 4.1, eq. (66), Fig. 6", prepare_segregation1d},
+        {"tumbler-kinematic", "segregation in the drum of Sect. 4.2 on a prescribed rolling flow, Fig. 7a-c",
+         prepare_tumbler_kinematic},
     };
     return kinds;
 }
