@@ -38,9 +38,9 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         sum += phi_hat, sum2 += phi_hat * phi_hat;
         ++count;
     });
-    for (const double a : all)
-        if (!(a > 0.0)) throw std::invalid_argument("pattern metrics: a region (core, ring or periphery) has no bed cell");
-    m.core = small[0] / all[0], m.ring = small[1] / all[1], m.periphery = small[2] / all[2];
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const auto fraction = [&](int region) { return all[region] > 0.0 ? small[region] / all[region] : nan; };
+    m.core = fraction(0), m.ring = fraction(1), m.periphery = fraction(2);
     m.mean = bed_small / bed_all;
     const double mean = sum / count, variance = std::max(0.0, sum2 / count - mean * mean);
     const double full = mean * (1 - mean);

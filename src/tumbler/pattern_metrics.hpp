@@ -21,14 +21,14 @@ struct PatternRegions {
 };
 
 struct PatternMetrics {
-    double core = 0, ring = 0, periphery = 0;  // small-particle fraction of each region
+    double core = 0, ring = 0, periphery = 0;  // small-particle fraction of each region (NaN if empty)
     double mean = 0;                           // mass-weighted phi_hat of the whole bed
     double index = 0;                          // segregation index (see above)
     double core_deviation = 0;                 // max |phi_hat - phi_hat_initial| over the core cells
 };
 
 /// The metrics of phi on the bed cells of `grid` (drum centre at the origin). phi_hat_initial:
-/// per cell, for core_deviation. Throws std::invalid_argument if a region has no bed cell.
+/// per cell, for core_deviation.
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial);
 

@@ -64,7 +64,6 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
         tumbler.step(lands ? remaining : tumbler.time_step(), after_bulk);
         check_bulk_bounds(step_bulk, Phi_max, tumbler.time());
         merge(result.after_bulk, step_bulk);
-        result.after_segregation.observe(grid, tumbler.phi(), Phi);
         if (observer) observer(tumbler, step_bulk);
         if (lands && t_frame == target && next_frame <= options.frames) {
             result.frames.push_back({target, composition_field(grid, tumbler.phi(), Phi)});
@@ -72,6 +71,7 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
         }
         if (lands && t_sample == target) {
             record(target);
+            result.after_segregation.observe(grid, tumbler.phi(), Phi);  // finite values; the clip keeps the bounds
             check_segregation_invariants("tumbler-kinematic", result.after_segregation, tumbler.largest_correction(),
                                          result.mass_start, total_amount(grid, tumbler.phi()), kTumblerMassTolerance,
                                          true, Phi_max);

@@ -44,7 +44,8 @@ struct TumblerRunResult {
     std::vector<TumblerSnapshot> frames;   // every frame time (empty if frames = 0)
     std::vector<double> phi_hat_initial;
     double mass_start = 0, mass_end = 0;   // sum of phi h^2 over the bed
-    BoundsMonitor after_bulk, after_segregation;  // extremes of phi - Phi and phi over the run
+    BoundsMonitor after_bulk;          // extremes of phi - Phi and phi after every bulk step
+    BoundsMonitor after_segregation;   // the same at the sample times (after the full step)
 };
 
 /// Observer called after every step (for checks beyond the built-in invariants); may be empty.
