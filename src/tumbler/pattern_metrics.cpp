@@ -35,15 +35,16 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         if (region >= 0) small[region] += phi[c], all[region] += Phi[c];
         if (region == 0) m.core_deviation = std::max(m.core_deviation, std::fabs(phi_hat - phi_hat_initial[c]));
         bed_small += phi[c], bed_all += Phi[c];
-        sum += phi_hat, sum2 += phi_hat * phi_hat;
+        sum += phi_hat;
         ++count;
     });
+    const double mean = sum / count;
+    for_each_bed_cell(grid, [&](std::size_t c, double) { sum2 += std::pow(composition(phi[c], Phi[c]) - mean, 2); });  // two passes: no cancellation
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const auto fraction = [&](int region) { return all[region] > 0.0 ? small[region] / all[region] : nan; };
     m.core = fraction(0), m.ring = fraction(1), m.periphery = fraction(2);
     m.mean = bed_small / bed_all;
-    const double mean = sum / count, variance = std::max(0.0, sum2 / count - mean * mean);
-    const double full = mean * (1 - mean);
+    const double variance = sum2 / count, full = mean * (1 - mean);
     m.index = full > 0.0 ? std::sqrt(variance / full) : 0.0;
     return m;
 }
