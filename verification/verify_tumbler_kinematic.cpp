@@ -144,20 +144,26 @@ int main(int argc, char** argv) {
     const double Phi = scene.setup.Phi, allowance = kBoundRoundOff * Phi;
     const double mass0 = total_amount(tumbler.grid(), tumbler.phi());
     double drift = 0;
-    long bulk_violations = 0, step_violations = 0;
-    const auto observer = [&](const KinematicTumbler& k, const BoundsMonitor&) {
+    long bulk_violations = 0, step_violations = 0, still_segregated = 0;
+    const auto observer = [&](const KinematicTumbler& k, const BoundsMonitor&, const std::vector<double>& after_bulk) {
         drift = std::max(drift, std::fabs(total_amount(k.grid(), k.phi()) - mass0) / mass0);
-        for (std::size_t c = 0; c < k.phi().size(); ++c)
-            if (k.grid().is_inside(c) && (k.phi()[c] < 0.0 || k.phi()[c] > k.Phi()[c])) ++step_violations;
+        for (std::size_t c = 0; c < k.phi().size(); ++c) {
+            if (!k.grid().is_inside(c)) continue;
+            if (k.phi()[c] < 0.0 || k.phi()[c] > k.Phi()[c]) ++step_violations;
+            // Below the layer a = 0 (no shear): eq. (63) with f = 0 on one side gives max(f_L <= 0, 0) = 0
+            // (or min(0, f_R >= 0) = 0), so the segregation sub-step leaves such a cell exactly as it is.
+            if (k.frozen().a[0][c] == 0.0 && k.frozen().a[2][c] == 0.0 && k.phi()[c] != after_bulk[c]) ++still_segregated;
+        }
     };
     const auto start = std::chrono::steady_clock::now();
     // The bulk-step extremes are checked inside the loop (InvariantError); count them here too.
     TumblerRunResult result;
     try {
-        result = run_kinematic_tumbler(tumbler, scene.run, [&](const KinematicTumbler& k, const BoundsMonitor& bulk) {
-            bulk_violations += bulk.max_excess > allowance || bulk.min_phi < -allowance;
-            observer(k, bulk);
-        });
+        result = run_kinematic_tumbler(tumbler, scene.run,
+                                       [&](const KinematicTumbler& k, const BoundsMonitor& bulk, const std::vector<double>& after_bulk) {
+                                           bulk_violations += bulk.max_excess > allowance || bulk.min_phi < -allowance;
+                                           observer(k, bulk, after_bulk);
+                                       });
     } catch (const std::exception& e) {
         t.note(std::string("run stopped: ") + e.what());
         t.count("run completed", 0, 1);
@@ -172,6 +178,7 @@ int main(int argc, char** argv) {
     t.count("steps whose bulk transport left [0, Phi] beyond round-off", bulk_violations, 0);
     t.count("(cell, step) pairs with phi < 0 or phi > Phi after the step", step_violations, 0);
     t.at_most("largest round-off clip of the segregation step / Phi", tumbler.largest_correction() / Phi, kBoundRoundOff);
+    t.count("(cell, step) pairs: a bed cell with a = 0 changed by the segregation sub-step", still_segregated, 0);
     check_direction(t, tumbler);
 
     const PatternRegions& r = scene.run.regions;

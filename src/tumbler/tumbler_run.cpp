@@ -52,9 +52,11 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
     const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
     Progress progress("tumbler-kinematic", options.t_end);
     BoundsMonitor step_bulk;
+    std::vector<double> phi_after_bulk;  // kept only for an observer
     const auto after_bulk = [&](const std::vector<double>& phi) {
         step_bulk = BoundsMonitor{};
         step_bulk.observe(grid, phi, Phi);
+        if (observer) phi_after_bulk.assign(phi.begin(), phi.end());
     };
     while (next_sample <= options.samples) {
         const double t_sample = sample_time(next_sample);
@@ -64,7 +66,7 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
         tumbler.step(lands ? remaining : tumbler.time_step(), after_bulk);
         check_bulk_bounds(step_bulk, Phi_max, tumbler.time());
         merge(result.after_bulk, step_bulk);
-        if (observer) observer(tumbler, step_bulk);
+        if (observer) observer(tumbler, step_bulk, phi_after_bulk);
         if (lands && t_frame == target && next_frame <= options.frames) {
             result.frames.push_back({target, composition_field(grid, tumbler.phi(), Phi)});
             ++next_frame;

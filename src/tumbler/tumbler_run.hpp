@@ -49,7 +49,9 @@ struct TumblerRunResult {
 };
 
 /// Observer called after every step (for checks beyond the built-in invariants); may be empty.
-using TumblerStepObserver = std::function<void(const KinematicTumbler& tumbler, const BoundsMonitor& after_bulk_step)>;
+/// It sees the extremes of phi after this step's bulk transport and phi at that point.
+using TumblerStepObserver = std::function<void(const KinematicTumbler& tumbler, const BoundsMonitor& after_bulk_step,
+                                               const std::vector<double>& phi_after_bulk)>;
 
 /// Runs `tumbler` from its current state to options.t_end (see above).
 TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
