@@ -60,15 +60,22 @@ constexpr double kPeripheryAtMost = 0.25;   // small fraction of the periphery (
 // the smeared bands at least half of it.
 constexpr double kIndexAtLeast = 0.45;
 // Core. No streamline of the core (r < r_core = d - delta0, the layer bottom's closest approach)
-// enters the layer, so physically phi_hat stays at 0.5 there. Numerically, donor-cell transport
-// of solid-body rotation on a Cartesian grid diffuses across the streamlines with D ~ 0.21 h |u|
-// (the cross-stream part of (h/2) diag(|u_x|, |u_z|) averaged over the circle), so the sorted ring
-// diffuses inwards over sqrt(2 D t) = 1.1 cm at r = r_core after 25 s. The innermost quarter of
-// the core, r < r_core/4, is 1.3 cm (1.2 diffusion lengths) from the ring: the excess of the
-// ring (<= 0.5) reaches it reduced by at least erfc(1.3/(2 x 0.75)) ~ 0.2, i.e. deviation <= 0.1;
-// a scheme with more diffusion (or segregation acting in the core) would exceed it.
-constexpr double kInnerCoreDeviation = 0.1;
-// Segregation may act only where the layer shears; below it a_k must be exactly 0.
+// enters the layer, so physically phi_hat stays at 0.5 there; numerically the bulk transport
+// carries the ring's excess inwards across the circular streamlines.
+//  donor cell: transport of solid-body rotation on a Cartesian grid diffuses across the flow with
+//    D ~ 0.21 h |u| (the cross-stream part of (h/2) diag(|u_x|, |u_z|) averaged over the circle):
+//    sqrt(2 D t) = 1.1 cm at r = r_core after 25 s. The innermost quarter, r < r_core/4, is 1.3 cm
+//    (1.2 diffusion lengths) from the ring: the ring's excess (<= 0.5) arrives reduced by at least
+//    erfc(1.3/(2 x 0.75)) ~ 0.2, i.e. a deviation <= 0.1.
+//  FCT (the figures' scheme): the antidiffusion cancels the first-order diffusion wherever the
+//    limiter does not act; the limiter acts at the ring's steep inner edge, a band of a few cells.
+//    At r < r_core/2, 8 cells inside the edge, the field sees only the second-order (Lax-Wendroff)
+//    error of a field that is 0.5 there, so we state 1e-3, a hundredth of the donor-cell
+//    deviation there (0.5 erfc(0.85/1.5) ~ 0.2).
+constexpr double kInnerCoreDonorCell = 0.1;  // |phi_hat - 0.5| for r < r_core/4
+constexpr double kInnerCoreFct = 1e-3;       // |phi_hat - 0.5| for r < r_core/2
+// Below the layer a = 0 (no shear): the segregation sub-step may change such a cell only by the
+// solver's round-off clip (kBoundRoundOff Phi).
 
 double degrees(double cosine) { return std::acos(std::min(1.0, std::fabs(cosine))) * 180 / M_PI; }
 
@@ -127,6 +134,64 @@ double inner_composition(const KinematicTumbler& tumbler, double radius) {
     return small / all;
 }
 
+/// Runs `scene` on `tumbler` through the scene's time loop, watching every step, and records the
+/// conservation and bound checks; `completed` is false if the loop stopped on an invariant.
+TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, KinematicTumbler& tumbler, bool& completed) {
+    const double Phi = scene.setup.Phi, allowance = kBoundRoundOff * Phi;
+    const double mass0 = total_amount(tumbler.grid(), tumbler.phi());
+    double drift = 0;
+    long bulk_violations = 0, step_violations = 0, still_segregated = 0;
+    const auto observer = [&](const KinematicTumbler& k, const BoundsMonitor& bulk, const std::vector<double>& after_bulk) {
+        bulk_violations += bulk.max_excess > allowance || bulk.min_phi < -allowance;
+        drift = std::max(drift, std::fabs(total_amount(k.grid(), k.phi()) - mass0) / mass0);
+        for (std::size_t c = 0; c < k.phi().size(); ++c) {
+            if (!k.grid().is_inside(c)) continue;
+            if (k.phi()[c] < 0.0 || k.phi()[c] > k.Phi()[c]) ++step_violations;
+            // Eq. (63) with f = 0 on one side gives max(f_L <= 0, 0) = 0 (or min(0, f_R >= 0) = 0).
+            if (k.frozen().a[0][c] == 0.0 && k.frozen().a[2][c] == 0.0 && std::fabs(k.phi()[c] - after_bulk[c]) > allowance)
+                ++still_segregated;
+        }
+    };
+    const auto start = std::chrono::steady_clock::now();
+    TumblerRunResult result;
+    completed = false;
+    try {
+        result = run_kinematic_tumbler(tumbler, scene.run, observer);
+        completed = true;
+    } catch (const std::exception& e) {  // the loop's own invariants (InvariantError)
+        t.note(std::string("run stopped: ") + e.what());
+        t.count("run completed", 0, 1);
+        return result;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.note(std::to_string(tumbler.steps()) + " steps, dt = " + verify::format(tumbler.time_step()) + " s (bulk " +
+           verify::format(tumbler.bulk_time_step()) + ", segregation " + verify::format(tumbler.segregation_time_step()) + "), " +
+           verify::format(tumbler.cell_updates() / seconds) + " cell updates/s (run with checks, " + verify::format(seconds) + " s)");
+    t.at_most("max relative change of sum(phi) over all steps", drift, kMassTol);
+    t.count("steps whose bulk transport left [0, Phi] beyond round-off", bulk_violations, 0);
+    t.count("(cell, step) pairs with phi < 0 or phi > Phi after the step", step_violations, 0);
+    t.at_most("largest round-off clip of the segregation step / Phi", tumbler.largest_correction() / Phi, kBoundRoundOff);
+    t.count("(cell, step) pairs: a cell with a = 0 changed by segregation beyond round-off", still_segregated, 0);
+    return result;
+}
+
+/// The pattern after the run (section 3 of the walk-through).
+void check_pattern(CheckTable& t, const TumblerKinematicScene& scene, const KinematicTumbler& tumbler, const TumblerRunResult& result) {
+    const PatternRegions& r = scene.run.regions;
+    const PatternMetrics& end = result.history.back().metrics;
+    t.note("pattern at t = " + verify::format(result.history.back().t) + " s; regions: core r < " + verify::format(r.r_core) +
+           " m, ring " + verify::format(r.r_core) + " <= r < " + verify::format(r.r_ring) + " m, periphery r >= " +
+           verify::format(r.r_periphery) + " m; core (all of it) " + verify::format(end.core));
+    t.at_least("small-particle fraction of the ring", end.ring, kRingAtLeast);
+    t.at_most("small-particle fraction of the periphery", end.periphery, kPeripheryAtMost);
+    t.at_least("segregation index std(phi_hat)/sqrt(m(1-m))", end.index, kIndexAtLeast);
+    if (scene.setup.bulk == BulkScheme::fct)
+        t.near("|phi_hat - 0.5| in the inner core r < r_core/2 (FCT)", inner_composition(tumbler, r.r_core / 2) - 0.5, 0.0, kInnerCoreFct);
+    else
+        t.near("|phi_hat - 0.5| in the inner core r < r_core/4 (donor cell)", inner_composition(tumbler, r.r_core / 4) - 0.5, 0.0,
+               kInnerCoreDonorCell);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -140,59 +205,22 @@ int main(int argc, char** argv) {
     CheckTable t("Kinematic tumbler (Sect. 4.2): " + path.filename().string() + ", " +
                  std::to_string(scene.setup.cells_per_diameter) + " cells per diameter, " + verify::format(scene.run.t_end) + " s");
 
+    t.note("the scene file as it is (bulk transport " + std::string(scene.setup.bulk == BulkScheme::fct ? "fct" : "donor-cell") + ")");
     KinematicTumbler tumbler(scene.setup);
-    const double Phi = scene.setup.Phi, allowance = kBoundRoundOff * Phi;
-    const double mass0 = total_amount(tumbler.grid(), tumbler.phi());
-    double drift = 0;
-    long bulk_violations = 0, step_violations = 0, still_segregated = 0;
-    const auto observer = [&](const KinematicTumbler& k, const BoundsMonitor&, const std::vector<double>& after_bulk) {
-        drift = std::max(drift, std::fabs(total_amount(k.grid(), k.phi()) - mass0) / mass0);
-        for (std::size_t c = 0; c < k.phi().size(); ++c) {
-            if (!k.grid().is_inside(c)) continue;
-            if (k.phi()[c] < 0.0 || k.phi()[c] > k.Phi()[c]) ++step_violations;
-            // Below the layer a = 0 (no shear): eq. (63) with f = 0 on one side gives max(f_L <= 0, 0) = 0
-            // (or min(0, f_R >= 0) = 0), so the segregation sub-step leaves such a cell exactly as it is.
-            if (k.frozen().a[0][c] == 0.0 && k.frozen().a[2][c] == 0.0 && k.phi()[c] != after_bulk[c]) ++still_segregated;
-        }
-    };
-    const auto start = std::chrono::steady_clock::now();
-    // The bulk-step extremes are checked inside the loop (InvariantError); count them here too.
-    TumblerRunResult result;
-    try {
-        result = run_kinematic_tumbler(tumbler, scene.run,
-                                       [&](const KinematicTumbler& k, const BoundsMonitor& bulk, const std::vector<double>& after_bulk) {
-                                           bulk_violations += bulk.max_excess > allowance || bulk.min_phi < -allowance;
-                                           observer(k, bulk, after_bulk);
-                                       });
-    } catch (const std::exception& e) {
-        t.note(std::string("run stopped: ") + e.what());
-        t.count("run completed", 0, 1);
-        return t.finish();
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    t.note(std::to_string(tumbler.steps()) + " steps, dt = " + verify::format(tumbler.time_step()) + " s (bulk " +
-           verify::format(tumbler.bulk_time_step()) + ", segregation " + verify::format(tumbler.segregation_time_step()) + "), " +
-           verify::format(tumbler.cell_updates() / seconds) + " cell updates/s (run with checks, " + verify::format(seconds) + " s)");
-
-    t.at_most("max relative change of sum(phi) over all steps", drift, kMassTol);
-    t.count("steps whose bulk transport left [0, Phi] beyond round-off", bulk_violations, 0);
-    t.count("(cell, step) pairs with phi < 0 or phi > Phi after the step", step_violations, 0);
-    t.at_most("largest round-off clip of the segregation step / Phi", tumbler.largest_correction() / Phi, kBoundRoundOff);
-    t.count("(cell, step) pairs: a bed cell with a = 0 changed by the segregation sub-step", still_segregated, 0);
+    bool completed = false;
+    const TumblerRunResult result = run_watched(t, scene, tumbler, completed);
+    if (!completed) return t.finish();
     check_direction(t, tumbler);
-
-    const PatternRegions& r = scene.run.regions;
-    const PatternMetrics& end = result.history.back().metrics;
-    t.note("pattern at t = " + verify::format(result.history.back().t) + " s; regions: core r < " + verify::format(r.r_core) +
-           " m, ring " + verify::format(r.r_core) + " <= r < " + verify::format(r.r_ring) + " m, periphery r >= " +
-           verify::format(r.r_periphery) + " m; core (all of it) " + verify::format(end.core));
-    t.at_least("small-particle fraction of the ring", end.ring, kRingAtLeast);
-    t.at_most("small-particle fraction of the periphery", end.periphery, kPeripheryAtMost);
-    t.at_least("segregation index std(phi_hat)/sqrt(m(1-m))", end.index, kIndexAtLeast);
-    t.near("|phi_hat - 0.5| in the inner core r < r_core/4 (numerical diffusion)", inner_composition(tumbler, r.r_core / 4) - 0.5, 0.0,
-           kInnerCoreDeviation);
-
+    check_pattern(t, scene, tumbler, result);
     const OutputSet files = tumbler_kinematic_outputs(tumbler, result, scene.run);
     for (const auto& [name, content] : files.files()) write_file_atomically(options.data_dir + "/" + name, content);
+
+    // The same scene with the other bulk scheme: the same invariants and pattern, and its own core bound.
+    TumblerKinematicScene other = scene;
+    other.setup.bulk = scene.setup.bulk == BulkScheme::fct ? BulkScheme::donor_cell : BulkScheme::fct;
+    t.note("the same scene with bulk transport " + std::string(other.setup.bulk == BulkScheme::fct ? "fct" : "donor-cell"));
+    KinematicTumbler second(other.setup);
+    const TumblerRunResult second_result = run_watched(t, other, second, completed);
+    if (completed) check_pattern(t, other, second, second_result);
     return t.finish();
 }

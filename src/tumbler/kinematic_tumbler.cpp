@@ -5,6 +5,7 @@
 #include "direction/segregation_direction.hpp"
 #include "direction/segregation_velocity.hpp"
 #include "segregation/bulk_transport.hpp"
+#include "segregation/bulk_transport_fct.hpp"
 #include "segregation/reconstruction.hpp"
 
 #include <algorithm>
@@ -28,7 +29,8 @@ RollingDrumFields checked_fields(const RollingDrumFlow& flow, const KinematicTum
 }  // namespace
 
 KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
-    : flow_(setup.drum), fields_(checked_fields(flow_, setup)), solver_(fields_.grid, setup.segregation) {
+    : flow_(setup.drum), fields_(checked_fields(flow_, setup)), solver_(fields_.grid, setup.segregation),
+      bulk_(setup.bulk), fct_(fields_.grid) {
     const Grid& g = fields_.grid;
     const std::size_t cells = g.cells();
     frozen_.Phi.assign(cells, 0.0);
@@ -69,7 +71,10 @@ void KinematicTumbler::step(double dt, const std::function<void(const std::vecto
     if (!(dt > 0.0 && dt <= dt_max_ * (1 + 1e-12)))
         throw std::invalid_argument("kinematic tumbler: step " + format_number(dt) + " outside (0, time_step()]");
     // Phi_old = Phi_new = Phi: the discrete divergence of M vanishes (kinematic_flow.hpp).
-    transport_bulk(fields_.grid, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk)
+    if (bulk_ == BulkScheme::fct)
+        fct_.step(frozen_.Phi, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk; assumption T5)
+    else
+        transport_bulk(fields_.grid, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk)
     bulk_updates_ += static_cast<long long>(bed_cells_);
     if (after_bulk) after_bulk(phi_);
     solver_.step(frozen_, dt, phi_);  // (eq. 52b)

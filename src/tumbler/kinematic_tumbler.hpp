@@ -8,9 +8,10 @@
 //   T = (3/2)(eta0/eps0) gamma_dot^2 with gamma_dot = sqrt(grad u_rel : grad u_rel) (eqs. 43, 45),
 //   a_k = (S^sl)_k = -S sqrt(T) (d_s . g) (d_s)_k (eq. 46; docs/assumptions.md S1), of either sign;
 //   a = 0 in the solid-body core (no shear, d_s = 0).
-// One step of length dt (docs/assumptions.md G1, T1):
-//   1. bulk transport of phi with the face mass fluxes M = Phi u.n (donor cell in phi_hat, unsplit);
-//      Phi_new = Phi_old because the discrete divergence of M vanishes;
+// One step of length dt (docs/assumptions.md G1, T3, T5):
+//   1. bulk transport of phi with the face mass fluxes M = Phi u.n (donor cell in phi_hat, unsplit,
+//      or FCT: donor cell plus limited antidiffusion, bulk_transport_fct.hpp); Phi_new = Phi_old
+//      because the discrete divergence of M vanishes;
 //   2. the segregation sub-step with Phi and T frozen (eq. 52b): split over x and z, the
 //      sign-robust interface flux of eq. (63) (SegregationSolver), zero flux on every wall face
 //      (the stair-stepped drum wall and free surface).
@@ -18,6 +19,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/segregation_step.hpp"
 #include "tumbler/kinematic_flow.hpp"
@@ -37,6 +39,7 @@ struct KinematicTumblerSetup {
     Material material = Material::glass_substitute();  // eta0, eps0 of eq. (45)
     SegregationOptions segregation;  // scheme, limiter and the CFL number of the segregation sub-step
     double bulk_cfl = 0.9;  // CFL number of the bulk transport, 0 < cfl <= 1
+    BulkScheme bulk = BulkScheme::fct;  // donor cell (the coupling contract) or FCT (assumption T5)
     std::function<double(double x, double z)> phi_hat0 = [](double, double) { return 0.5; };  // initial phi_hat
 };
 
@@ -79,6 +82,8 @@ private:
     RollingDrumFields fields_;
     FrozenFields frozen_;
     SegregationSolver solver_;
+    BulkScheme bulk_;
+    FctBulkTransport fct_;
     FaceFields no_inflow_;  // closed drum: nothing enters through a domain boundary
     std::vector<double> phi_, T_, ds_x_, ds_z_;
     double dt_bulk_ = 0, dt_segregation_ = 0, dt_max_ = 0, t_ = 0;
