@@ -192,6 +192,7 @@ int main(int argc, char** argv) {
         {"tumbler-kinematic, phi_hat > 1 on part of the bed", tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"},
         {"tumbler-kinematic, classic scheme", tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"},
         {"tumbler-kinematic, rotation_rate = 0", tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"},
+        {"tumbler-kinematic, unknown bulk scheme", tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"},
     };
     for (const auto& [label, text] : tumblers) {
         const fs::path file = work / "scene.toml";
