@@ -13,11 +13,12 @@
 //   - the pattern after 25 s, as inequalities derived from the kinematics before running:
 //     small particles in the ring below the layer's deepest point, large ones at the wall, a
 //     segregation index well above the mixed value, and the core, which no streamline from the
-//     layer reaches, changed only by the numerical diffusion of the donor-cell bulk transport
-//     (bounded by a diffusion estimate).
-// Writes the scene's outputs (tumbler_*.dat) for figures/fig7{a,b,c}_*.gp.
+//     layer reaches, changed only by the numerical diffusion of the bulk transport (a bound per
+//     bulk scheme).
+// Then the same scene with the other bulk scheme (FCT <-> donor cell), the same checks except the
+// direction. Writes the scene's outputs (tumbler_*.dat) for figures/fig7{a,b,c}_*.gp.
 //
-// Run: build/verification/verify_tumbler_kinematic [--data DIR]   (a few seconds; reads
+// Run: build/verification/verify_tumbler_kinematic [--data DIR]   (about 7 s; reads
 // figures/tumbler_kinematic.toml relative to the source tree the binary was built in)
 #include "core/scene_file.hpp"
 #include "harness/check_table.hpp"
