@@ -2,6 +2,7 @@
 // verification/verify_tumbler_kinematic.cpp).
 #include "segregation/bulk_transport_fct.hpp"
 #include "segregation/invariants.hpp"
+#include "segregation/scheme.hpp"
 #include "tumbler/kinematic_tumbler.hpp"
 #include "tumbler/pattern_metrics.hpp"
 

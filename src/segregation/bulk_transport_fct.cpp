@@ -8,17 +8,6 @@
 
 namespace granseg {
 
-const std::vector<std::string>& bulk_scheme_names() {
-    static const std::vector<std::string> names = {"donor-cell", "fct"};
-    return names;
-}
-
-BulkScheme parse_bulk_scheme(const std::string& name) {
-    if (name == "donor-cell") return BulkScheme::donor_cell;
-    if (name == "fct") return BulkScheme::fct;
-    throw std::invalid_argument("unknown bulk scheme \"" + name + "\"");
-}
-
 FctBulkTransport::FctBulkTransport(Grid grid) : grid_(std::move(grid)) {
     for (int axis = 0; axis < 3; ++axis)
         for_each_face(grid_, axis, [&](const FaceCells& f) {

@@ -15,15 +15,9 @@
 
 #include "segregation/bulk_transport.hpp"
 
-#include <string>
 #include <vector>
 
 namespace granseg {
-
-/// The bulk transport of a scene without a flow solver: the contract's donor cell, or FCT.
-enum class BulkScheme { donor_cell, fct };
-const std::vector<std::string>& bulk_scheme_names();  // "donor-cell", "fct"
-BulkScheme parse_bulk_scheme(const std::string& name);  // std::invalid_argument for an unknown name
 
 class FctBulkTransport {
 public:
