@@ -181,6 +181,24 @@ int main(int argc, char** argv) {
         {"segregation1d, unknown scheme",
          column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
     };
+    // Kinematic tumbler (issue 5): acceptance cases and the conditions between keys.
+    const std::string tumbler = "[scene]\nkind = \"tumbler-kinematic\"\n[output]\ndir = \"" + out.string() + "\"\n";
+    const std::vector<std::pair<std::string, std::string>> tumblers = {
+        {"tumbler-kinematic, fill_fraction = 1.2", tumbler + "[drum]\nfill_fraction = 1.2\n[time]\nend = 1\n"},
+        {"tumbler-kinematic, negative end time", tumbler + "[time]\nend = -1\n"},
+        {"tumbler-kinematic, unknown key", tumbler + "[time]\nend = 1\n[drum]\nrotation_speed = 0.1\n"},
+        {"tumbler-kinematic, layer thicker than the bed allows", tumbler + "[time]\nend = 1\n[drum]\nlayer_thickness = 0.05\n"},
+        {"tumbler-kinematic, layer thinner than a cell", tumbler + "[time]\nend = 1\n[drum]\ncells_per_diameter = 10\n"},
+        {"tumbler-kinematic, phi_hat > 1 on part of the bed", tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"},
+        {"tumbler-kinematic, classic scheme", tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"},
+        {"tumbler-kinematic, rotation_rate = 0", tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"},
+        {"tumbler-kinematic, unknown bulk scheme", tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"},
+    };
+    for (const auto& [label, text] : tumblers) {
+        const fs::path file = work / "scene.toml";
+        std::ofstream(file) << text;
+        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
+    }
     for (const auto& [label, text] : columns) {
         const fs::path file = work / "scene.toml";
         std::ofstream(file) << text;
@@ -226,6 +244,11 @@ int main(int argc, char** argv) {
     std::string first_line;
     std::getline(profile, first_line);
     t.count("run, valid segregation1d scene: first line is '# z Phi T phi'", first_line == "# z Phi T phi", 1);
+    const fs::path good_tumbler = work / "good_tumbler.toml";
+    std::ofstream(good_tumbler) << tumbler << "[drum]\ncells_per_diameter = 20\nlayer_thickness = 0.01\n[time]\nend = 0.5\n";
+    const Outcome tumbler_ran = cli.run("run '" + good_tumbler.string() + "'");
+    t.count("run, valid tumbler-kinematic scene: exit status", tumbler_ran.status, 0);
+    t.count("run, valid tumbler-kinematic scene: tumbler_metrics.dat written", fs::exists(out / "tumbler_metrics.dat"), 1);
     const Outcome closures = cli.run("closures --Phi 0.59 --phi-hat 0.4 --T 1e-4");
     t.count("closures, valid state: exit status", closures.status, 0);
     long missing = 0;

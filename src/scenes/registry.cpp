@@ -3,6 +3,7 @@
 #include "scenes/flow_scenes.hpp"
 #include "scenes/scene_kind.hpp"
 #include "scenes/segregation1d.hpp"
+#include "scenes/tumbler_kinematic.hpp"
 
 namespace granseg {
 
@@ -14,6 +15,8 @@ const std::vector<SceneKind>& scene_kinds() {
         {"simple-shear", "homogeneous simple shear between moving walls (Sect. 2.1 flow, eq. 45)", prepare_simple_shear},
         {"inclined-plane", "a granular layer on a rough inclined plane, periodic along the slope", prepare_inclined_plane},
         {"tumbler-flow", "the rotating drum of Sect. 4.2 without segregation (rotating frame)", prepare_tumbler_flow},
+        {"tumbler-kinematic", "segregation in the drum of Sect. 4.2 on a prescribed rolling flow, Fig. 7a-c",
+         prepare_tumbler_kinematic},
     };
     return kinds;
 }

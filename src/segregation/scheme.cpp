@@ -39,4 +39,11 @@ Limiter parse_limiter(const std::string& name) { return parse<Limiter>(name, lim
 
 std::string limiter_name(Limiter limiter) { return limiter_names().at(static_cast<std::size_t>(limiter)); }
 
+const std::vector<std::string>& bulk_scheme_names() {
+    static const std::vector<std::string> names = {"donor-cell", "fct"};
+    return names;
+}
+
+BulkScheme parse_bulk_scheme(const std::string& name) { return parse<BulkScheme>(name, bulk_scheme_names(), "bulk scheme"); }
+
 }  // namespace granseg

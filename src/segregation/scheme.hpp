@@ -18,15 +18,21 @@ enum class SegregationScheme { modified_godunov, modified_godunov_2, classic_upw
 /// Slope limiter of the second-order reconstruction of phi_hat.
 enum class Limiter { minmod, mc };
 
+/// Bulk transport of a scene without a flow solver: the coupling contract's donor cell, or
+/// flux-corrected transport (bulk_transport_fct.hpp).
+enum class BulkScheme { donor_cell, fct };
+
 /// Scene-file names, in the order listed in messages ("modified-godunov", ...).
 const std::vector<std::string>& scheme_names();
 const std::vector<std::string>& limiter_names();
+const std::vector<std::string>& bulk_scheme_names();  // "donor-cell", "fct"
 
 /// Name <-> value; the parsers throw std::invalid_argument for an unknown name.
 SegregationScheme parse_scheme(const std::string& name);
 std::string scheme_name(SegregationScheme scheme);
 Limiter parse_limiter(const std::string& name);
 std::string limiter_name(Limiter limiter);
+BulkScheme parse_bulk_scheme(const std::string& name);
 
 /// True for the schemes that keep 0 <= phi <= Phi (the modified ones).
 inline bool preserves_bounds(SegregationScheme s) {

@@ -1,5 +1,7 @@
 #include "tumbler/kinematic_flow.hpp"
 
+#include "segregation/bulk_transport.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -164,25 +166,10 @@ RollingDrumFields discretize(const RollingDrumFlow& flow, int cells_per_diameter
             }
         }
 
-    // Corner values: 0 (the wall streamline) on every corner of a cell outside the bed or the grid.
-    const auto corner = [nx](int i, int k) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx + 1) * k; };
-    f.psi_corner.assign(static_cast<std::size_t>(nx + 1) * (nz + 1), 0.0);
-    for (int k = 0; k <= nz; ++k)
-        for (int i = 0; i <= nx; ++i) {
-            bool boundary = false;
-            for (int ci = i - 1; ci <= i; ++ci)
-                for (int ck = k - 1; ck <= k; ++ck)
-                    if (ci < 0 || ci >= nx || ck < 0 || ck >= nz || !g.is_inside(g.index(ci, 0, ck))) boundary = true;
-            if (!boundary) f.psi_corner[corner(i, k)] = Phi * flow.stream_function(g.origin[0] + i * g.h[0], g.origin[2] + k * g.h[2]);
-        }
-    f.M[0].assign(g.faces(0), 0.0);
-    f.M[2].assign(g.faces(2), 0.0);
-    for (int k = 0; k < nz; ++k)
-        for (int i = 0; i <= nx; ++i)  // x-faces: Phi u_x = Phi d(psi)/dz
-            f.M[0][g.face_index(0, i, 0, k)] = (f.psi_corner[corner(i, k + 1)] - f.psi_corner[corner(i, k)]) / g.h[2];
-    for (int k = 0; k <= nz; ++k)
-        for (int i = 0; i < nx; ++i)  // z-faces: Phi u_z = -Phi d(psi)/dx
-            f.M[2][g.face_index(2, i, 0, k)] = -(f.psi_corner[corner(i + 1, k)] - f.psi_corner[corner(i, k)]) / g.h[0];
+    // One implementation of the corner differences (segregation/bulk_transport.hpp): every corner
+    // of a cell outside the bed gets the wall value 0; the grid-boundary corners lie on or outside
+    // the wall circle, where stream_function() is 0 as well.
+    f.M = stream_function_mass_fluxes(g, [&flow, Phi](double x, double z) { return Phi * flow.stream_function(x, z); });
     return f;
 }
 

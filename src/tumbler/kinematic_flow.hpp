@@ -94,7 +94,6 @@ struct RollingDrumFields {
     Grid grid;                               // x-z plane, ny = 1, covering [-R, R]^2; inside = bed cells
     std::vector<unsigned char> in_drum;      // 1 where the cell centre is in the drum (bed or air)
     std::vector<unsigned char> in_layer;     // 1 where the cell centre is in the flowing layer
-    std::vector<double> psi_corner;          // Phi psi at corner (i, k), index i + (nx + 1) k
     std::array<std::vector<double>, 3> M;    // face mass fluxes Phi u.n, grid.face_index layout; M[1] empty
     std::array<std::vector<double>, 3> u;    // inertial velocity at cell centres (0 outside the bed)
     std::array<std::vector<double>, 3> u_rel;      // relative (drum-frame) velocity at cell centres
@@ -102,9 +101,10 @@ struct RollingDrumFields {
 };
 
 /// Samples `flow` on cells_per_diameter^2 cells with constant granular volume fraction Phi.
-/// A cell belongs to the bed if its centre does (stair-stepped wall and surface). psi is sampled at
-/// the cell corners and set to its wall value 0 on every corner of a cell outside the bed or of the
-/// grid boundary; the face fluxes are differences of corner values,
+/// A cell belongs to the bed if its centre does (stair-stepped wall and surface). Phi psi is sampled
+/// at the cell corners and set to its wall value 0 on every corner of a cell outside the bed (the
+/// grid-boundary corners lie outside the drum, where psi = 0 too); the face fluxes are differences
+/// of corner values (stream_function_mass_fluxes),
 ///   M_x(face) = (psi_top - psi_bottom)/h_z,   M_z(face) = -(psi_right - psi_left)/h_x,
 /// so the discrete divergence of every cell cancels to round-off and every face next to the wall,
 /// the free surface or the grid boundary carries exactly 0.

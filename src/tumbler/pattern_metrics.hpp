@@ -1,0 +1,44 @@
+// Measures of the segregation pattern in the drum (docs/sect4.2_tumbler_kinematic.md, section 3).
+//
+// Regions, by the distance r of a bed-cell centre from the drum centre (inertial frame):
+//   core       r < r_core:              solid-body streamlines that never reach the flowing layer
+//   ring       r_core <= r < r_ring:    the streamlines just below the layer's deepest point
+//   periphery  r >= r_periphery:        next to the drum wall
+// Each region's small-particle fraction is sum(phi)/sum(Phi) over its bed cells (the mass-weighted
+// phi_hat). The segregation index is the standard deviation of phi_hat over the bed (cell
+// weighted) divided by sqrt(m (1 - m)), m the mean: 0 for any uniform mixture, 1 for a bed split
+// into pure small and pure large cells (Danckwerts' intensity of segregation).
+#pragma once
+
+#include "core/grid.hpp"
+
+#include <vector>
+
+namespace granseg {
+
+struct PatternRegions {
+    double r_core = 0, r_ring = 0, r_periphery = 0;  // m
+};
+
+struct PatternMetrics {
+    double core = 0, ring = 0, periphery = 0;  // small-particle fraction of each region (NaN if empty)
+    double mean = 0;                           // mass-weighted phi_hat of the whole bed
+    double index = 0;                          // segregation index (see above)
+    double core_deviation = 0;                 // max |phi_hat - phi_hat_initial| over the core cells
+};
+
+/// The metrics of phi on the bed cells of `grid` (drum centre at the origin). phi_hat_initial:
+/// per cell, for core_deviation.
+PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
+                               const PatternRegions& regions, const std::vector<double>& phi_hat_initial);
+
+/// phi_hat averaged (mass-weighted) over the bed cells in each of `shells` equal radial shells of
+/// [0, radius]; the mean radius of the cells of each shell in `r` (NaN where a shell is empty).
+struct ShellProfile {
+    std::vector<double> r, phi_hat;
+    std::vector<long> cells;
+};
+ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
+                           double radius, int shells);
+
+}  // namespace granseg

@@ -1,0 +1,98 @@
+#include "tumbler/tumbler_run.hpp"
+
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "core/progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace granseg {
+
+namespace {
+
+/// Throws InvariantError if phi left [0, Phi] by more than round-off after the bulk step (the
+/// segregation sub-step's excursions are checked through its round-off guard).
+void check_bulk_bounds(const BoundsMonitor& b, double Phi_max, double t) {
+    const double allowance = kBoundRoundOff * Phi_max;
+    if (b.nonfinite > 0) throw InvariantError("tumbler-kinematic: non-finite phi after the bulk step at t = " + format_number(t));
+    if (b.max_excess > allowance || b.min_phi < -allowance)
+        throw InvariantError("tumbler-kinematic: the bulk step left 0 <= phi <= Phi at t = " + format_number(t) +
+                             " (max phi - Phi " + format_number(b.max_excess, 3) + ", min phi " + format_number(b.min_phi, 3) + ")");
+}
+
+/// Folds the extremes of one step into those of the run.
+void merge(BoundsMonitor& run, const BoundsMonitor& step) {
+    if (step.max_excess > run.max_excess) run.max_excess = step.max_excess, run.where_excess = step.where_excess;
+    if (step.min_phi < run.min_phi) run.min_phi = step.min_phi, run.where_min = step.where_min;
+    run.nonfinite += step.nonfinite;
+}
+
+}  // namespace
+
+TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
+                                       const TumblerStepObserver& observer) {
+    if (!(options.t_end > tumbler.time()) || options.samples < 1 || options.frames < 0)
+        throw std::invalid_argument("tumbler run: needs t_end > t, samples >= 1, frames >= 0");
+    const Grid& grid = tumbler.grid();
+    const std::vector<double>& Phi = tumbler.Phi();
+    const double Phi_max = *std::max_element(Phi.begin(), Phi.end());
+    TumblerRunResult result;
+    result.phi_hat_initial = composition_field(grid, tumbler.phi(), Phi);
+    result.mass_start = total_amount(grid, tumbler.phi());
+    const auto record = [&](double t) {
+        result.history.push_back({t, pattern_metrics(grid, tumbler.phi(), Phi, options.regions, result.phi_hat_initial)});
+    };
+    record(tumbler.time());
+
+    const double t0 = tumbler.time(), span = options.t_end - t0;
+    int next_sample = 1, next_frame = 1;
+    const auto sample_time = [&](int n) { return n == options.samples ? options.t_end : t0 + span * n / options.samples; };
+    const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
+    Progress progress("tumbler-kinematic", options.t_end);
+    BoundsMonitor step_bulk;
+    std::vector<double> phi_after_bulk;  // kept only for an observer
+    const auto after_bulk = [&](const std::vector<double>& phi) {
+        step_bulk = BoundsMonitor{};
+        step_bulk.observe(grid, phi, Phi);
+        if (observer) phi_after_bulk.assign(phi.begin(), phi.end());
+    };
+    while (next_sample <= options.samples) {
+        const double t_sample = sample_time(next_sample);
+        const double t_frame = next_frame <= options.frames ? frame_time(next_frame) : t_sample;
+        const double target = std::min(t_sample, t_frame), remaining = target - tumbler.time();
+        const bool lands = remaining <= tumbler.time_step();  // this step ends at the target
+        tumbler.step(lands ? remaining : tumbler.time_step(), after_bulk);
+        check_bulk_bounds(step_bulk, Phi_max, tumbler.time());
+        merge(result.after_bulk, step_bulk);
+        if (observer) observer(tumbler, step_bulk, phi_after_bulk);
+        if (lands && t_frame == target && next_frame <= options.frames) {
+            result.frames.push_back({target, composition_field(grid, tumbler.phi(), Phi)});
+            ++next_frame;
+        }
+        if (lands && t_sample == target) {
+            record(target);
+            result.after_segregation.observe(grid, tumbler.phi(), Phi);  // finite values; the clip keeps the bounds
+            check_segregation_invariants("tumbler-kinematic", result.after_segregation, tumbler.largest_correction(),
+                                         result.mass_start, total_amount(grid, tumbler.phi()), kTumblerMassTolerance,
+                                         true, Phi_max);
+            ++next_sample;
+        }
+        progress.update(tumbler.time());
+    }
+    progress.finish();
+    result.mass_end = total_amount(grid, tumbler.phi());
+    return result;
+}
+
+PatternRegions default_regions(const RollingDrumFlow& flow) {
+    PatternRegions r;
+    const double d = flow.surface_distance(), delta0 = flow.parameters().layer_thickness, R = flow.radius();
+    r.r_core = d - delta0;  // the layer bottom's closest approach to the centre (at s = 0)
+    r.r_ring = d;           // circles below r = d lie wholly in the bed
+    r.r_periphery = 0.8 * R;
+    return r;
+}
+
+}  // namespace granseg

@@ -1,0 +1,63 @@
+// The time loop of a kinematic tumbler run, shared by the tumbler-kinematic scene and
+// verify_tumbler_kinematic: steps of KinematicTumbler::time_step() (shortened to land on the
+// sample times) until t_end, the pattern metrics at every sample time, snapshots of phi_hat, and
+// the invariants checked while it runs (InvariantError, exit 3):
+//   - the amount of small particles (sum of phi over the bed) stays within 1e-12 relative of
+//     its start: the mass fluxes are divergence-free and every wall face carries zero flux;
+//   - 0 <= phi <= Phi after the bulk step and after the segregation sub-step, up to the
+//     round-off allowance kBoundRoundOff Phi (before the solver's guard clips; see invariants.hpp);
+//   - every phi finite.
+#pragma once
+
+#include "segregation/invariants.hpp"
+#include "tumbler/kinematic_tumbler.hpp"
+#include "tumbler/pattern_metrics.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace granseg {
+
+/// Relative change of the amount of small particles a run may show (round-off of ~1e4 steps of
+/// telescoping sums is ~1e-14; 1e-12 flags a real leak).
+constexpr double kTumblerMassTolerance = 1e-12;
+
+struct TumblerRunOptions {
+    double t_end = 25.0;   // s
+    int samples = 100;     // metric records after t = 0 (every t_end/samples)
+    int frames = 0;        // snapshots of phi_hat after t = 0 (every t_end/frames); 0: none
+    PatternRegions regions;
+};
+
+struct TumblerRecord {
+    double t = 0;
+    PatternMetrics metrics;
+};
+
+struct TumblerSnapshot {
+    double t = 0;
+    std::vector<double> phi_hat;
+};
+
+struct TumblerRunResult {
+    std::vector<TumblerRecord> history;    // t = 0 and every sample time
+    std::vector<TumblerSnapshot> frames;   // every frame time (empty if frames = 0)
+    std::vector<double> phi_hat_initial;
+    double mass_start = 0, mass_end = 0;   // sum of phi h^2 over the bed
+    BoundsMonitor after_bulk;          // extremes of phi - Phi and phi after every bulk step
+    BoundsMonitor after_segregation;   // the same at the sample times (after the full step)
+};
+
+/// Observer called after every step (for checks beyond the built-in invariants); may be empty.
+/// It sees the extremes of phi after this step's bulk transport and phi at that point.
+using TumblerStepObserver = std::function<void(const KinematicTumbler& tumbler, const BoundsMonitor& after_bulk_step,
+                                               const std::vector<double>& phi_after_bulk)>;
+
+/// Runs `tumbler` from its current state to options.t_end (see above).
+TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
+                                       const TumblerStepObserver& observer = {});
+
+/// The regions of the pattern metrics for `flow` (docs/sect4.2_tumbler_kinematic.md, section 3).
+PatternRegions default_regions(const RollingDrumFlow& flow);
+
+}  // namespace granseg

@@ -1,0 +1,82 @@
+#include "tumbler/tumbler_tables.hpp"
+
+#include "core/format.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace granseg {
+
+DataTable drum_outline(const RollingDrumFlow& flow) {
+    DataTable outline({"x", "z"});
+    outline.comment("index 0: drum wall; 1: free surface; 2: bottom of the flowing layer (inertial frame, m)");
+    const double R = flow.radius(), L = flow.half_chord(), d = flow.surface_distance();
+    for (int i = 0; i <= 360; ++i) outline.row({R * std::cos(i * M_PI / 180), R * std::sin(i * M_PI / 180)});
+    outline.blank(), outline.blank();
+    for (const double s : {-L, L}) {
+        const Eigen::Vector3d X = d * flow.normal() + s * flow.tangent();
+        outline.row({X(0), X(2)});
+    }
+    outline.blank(), outline.blank();
+    for (int i = 0; i <= 200; ++i) {
+        const double s = L * (i / 100.0 - 1);
+        const Eigen::Vector3d X = (d - flow.layer_depth(s)) * flow.normal() + s * flow.tangent();
+        if (flow.in_drum(X(0), X(2))) outline.row({X(0), X(2)});
+    }
+    return outline;
+}
+
+DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what) {
+    DataTable cells({"x", "z", "phi_hat"});
+    cells.comment(what + " (bed cells, inertial frame, m; cell size " + format_number(grid.h[0]) + " m)");
+    for (int k = 0; k < grid.n[2]; ++k)
+        for (int i = 0; i < grid.n[0]; ++i) {
+            const std::size_t c = grid.index(i, 0, k);
+            if (grid.is_inside(c)) cells.row({grid.center(0, i), grid.center(2, k), phi_hat[c]});
+        }
+    return cells;
+}
+
+DataTable tumbler_flow_cells(const KinematicTumbler& tumbler) {
+    const Grid& g = tumbler.grid();
+    const RollingDrumFields& f = tumbler.fields();
+    DataTable cells({"x", "z", "in_layer", "ux", "uz", "ds_x", "ds_z", "T", "a_x", "a_z"});
+    cells.comment("bed cells: inertial velocity (m/s), d_s (out of the bed; 0 in the core), T (m^2/s^2, eq. 45), "
+                  "a_k = (S^sl)_k (m/s, eq. 46)");
+    for (int k = 0; k < g.n[2]; ++k)
+        for (int i = 0; i < g.n[0]; ++i) {
+            const std::size_t c = g.index(i, 0, k);
+            if (!g.is_inside(c)) continue;
+            cells.row({g.center(0, i), g.center(2, k), double(f.in_layer[c]), f.u[0][c], f.u[2][c], tumbler.ds_x()[c],
+                       tumbler.ds_z()[c], tumbler.T()[c], tumbler.frozen().a[0][c], tumbler.frozen().a[2][c]});
+        }
+    return cells;
+}
+
+DataTable tumbler_metrics(const TumblerRunResult& result, const PatternRegions& regions) {
+    DataTable table({"t", "index", "core", "ring", "periphery", "mean", "core_deviation"});
+    table.comment("segregation index = std(phi_hat over the bed)/sqrt(m (1 - m)); core, ring, periphery: sum(phi)/sum(Phi) for r < " +
+                  format_number(regions.r_core) + ", " + format_number(regions.r_core) + " <= r < " + format_number(regions.r_ring) +
+                  ", r >= " + format_number(regions.r_periphery) + " m; core_deviation = max |phi_hat - initial| in the core");
+    for (const TumblerRecord& r : result.history)
+        table.row({r.t, r.metrics.index, r.metrics.core, r.metrics.ring, r.metrics.periphery, r.metrics.mean,
+                   r.metrics.core_deviation});
+    return table;
+}
+
+DataTable tumbler_shells(const KinematicTumbler& tumbler, const TumblerRunResult& result, int shells) {
+    const Grid& g = tumbler.grid();
+    std::vector<double> phi0(g.cells());
+    for (std::size_t c = 0; c < g.cells(); ++c) phi0[c] = result.phi_hat_initial[c] * tumbler.Phi()[c];
+    const ShellProfile before = shell_profile(g, phi0, tumbler.Phi(), tumbler.flow().radius(), shells);
+    const ShellProfile after = shell_profile(g, tumbler.phi(), tumbler.Phi(), tumbler.flow().radius(), shells);
+    DataTable table({"r", "phi_hat_initial", "phi_hat_final", "cells"});
+    table.comment("phi_hat averaged (mass-weighted) over the bed cells of " + std::to_string(shells) +
+                  " equal radial shells; r: mean radius of the shell's cells, m; t = " + format_number(tumbler.time()) + " s");
+    for (int s = 0; s < shells; ++s)
+        if (after.cells[s] > 0) table.row({after.r[s], before.phi_hat[s], after.phi_hat[s], double(after.cells[s])});
+    return table;
+}
+
+}  // namespace granseg

@@ -1,0 +1,132 @@
+// The kinematic tumbler's pieces on small hand-made states (the full run is checked by
+// verification/verify_tumbler_kinematic.cpp).
+#include "segregation/bulk_transport_fct.hpp"
+#include "segregation/invariants.hpp"
+#include "segregation/scheme.hpp"
+#include "tumbler/kinematic_tumbler.hpp"
+#include "tumbler/pattern_metrics.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+using namespace granseg;
+namespace tt = boost::test_tools;
+
+BOOST_AUTO_TEST_SUITE(kinematic_tumbler_suite)
+
+namespace {
+Grid square(int n) {
+    Grid g = Grid::plane_xz(n, n, -1.0, -1.0, 2.0, 2.0);
+    g.inside.assign(g.cells(), 1);
+    return g;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(segregation_index_is_0_mixed_and_1_split) {
+    const Grid g = square(4);
+    const std::vector<double> Phi(g.cells(), 0.5), mixed(g.cells(), 0.2), initial(g.cells(), 0.4);
+    const PatternRegions regions{0.5, 1.0, 1.2};
+    BOOST_TEST(pattern_metrics(g, mixed, Phi, regions, initial).index <= 1e-15);  // mean of 16 equal values: round-off
+    std::vector<double> split(g.cells(), 0.0);
+    for (std::size_t c = 0; c < g.cells(); c += 2) split[c] = 0.5;  // half pure small, half pure large
+    const PatternMetrics m = pattern_metrics(g, split, Phi, regions, initial);
+    BOOST_TEST(m.index == 1.0, tt::tolerance(1e-15));
+    BOOST_TEST(m.mean == 0.5, tt::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(regions_by_radius) {
+    const Grid g = square(4);  // centres at radius sqrt(2)/4 (4 cells), sqrt(10)/4 (8), sqrt(18)/4 (4)
+    const std::vector<double> Phi(g.cells(), 0.5), initial(g.cells(), 1.0);
+    std::vector<double> phi(g.cells());
+    for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 4; ++i) phi[g.index(i, 0, k)] = std::hypot(g.center(0, i), g.center(2, k)) < 0.5 ? 0.5 : 0.1;
+    const PatternMetrics m = pattern_metrics(g, phi, Phi, PatternRegions{0.5, 1.0, 1.0}, initial);
+    BOOST_TEST(m.core == 1.0);
+    BOOST_TEST(m.ring == 0.2, tt::tolerance(1e-15));
+    BOOST_TEST(m.periphery == 0.2, tt::tolerance(1e-15));
+    BOOST_TEST(m.core_deviation == 0.0);
+    const PatternMetrics empty = pattern_metrics(g, phi, Phi, PatternRegions{0.1, 0.2, 5.0}, initial);
+    BOOST_TEST(std::isnan(empty.core));
+    const ShellProfile p = shell_profile(g, phi, Phi, 1.5, 3);
+    BOOST_TEST(p.cells[0] == 4);
+    BOOST_TEST(p.phi_hat[0] == 1.0);
+}
+
+BOOST_AUTO_TEST_CASE(mixed_bed_stays_mixed_without_segregation) {
+    KinematicTumblerSetup setup;
+    setup.cells_per_diameter = 30;
+    setup.S = 0.0;  // bulk transport alone keeps phi_hat a convex combination of 0.5
+    KinematicTumbler tumbler(setup);
+    for (int n = 0; n < 50; ++n) tumbler.step(tumbler.time_step());
+    const std::vector<double> phi_hat = composition_field(tumbler.grid(), tumbler.phi(), tumbler.Phi());
+    double worst = 0;
+    for (std::size_t c = 0; c < phi_hat.size(); ++c)
+        if (tumbler.grid().is_inside(c)) worst = std::max(worst, std::fabs(phi_hat[c] - 0.5));
+    BOOST_TEST(worst <= 1e-14);
+    BOOST_CHECK_THROW(tumbler.step(2 * tumbler.time_step()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(bad_setups_are_rejected) {
+    KinematicTumblerSetup setup;
+    setup.cells_per_diameter = 30;
+    setup.Phi = 1.0;
+    BOOST_CHECK_THROW(KinematicTumbler{setup}, std::invalid_argument);
+    setup.Phi = 0.6;
+    setup.phi_hat0 = [](double x, double) { return x > 0 ? 1.5 : 0.5; };
+    BOOST_CHECK_THROW(KinematicTumbler{setup}, std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(fct_bulk_transport_suite)
+
+namespace {
+/// A periodic column of n cells carrying a step profile at uniform speed: M = Phi v on every face.
+struct PeriodicColumn {
+    Grid grid = Grid::column(40, 1.0);
+    std::vector<double> Phi = std::vector<double>(40, 0.6);
+    FaceFields M;
+    std::vector<double> phi;
+    PeriodicColumn() {
+        grid.periodic[2] = true;
+        M[2].assign(grid.faces(2), 0.6 * 0.7);
+        for (int k = 0; k < 40; ++k) phi.push_back(k >= 10 && k < 20 ? 0.6 : 0.0);
+    }
+};
+double l1_distance(const std::vector<double>& a, const std::vector<double>& b) {
+    double d = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) d += std::fabs(a[k] - b[k]);
+    return d;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(fct_conserves_keeps_bounds_and_beats_donor_cell) {
+    PeriodicColumn fct, donor;
+    const std::vector<double> start = fct.phi;
+    FctBulkTransport transport(fct.grid);
+    const double dt = bulk_time_step(fct.grid, fct.Phi, fct.M, 0.8), amount = total_amount(fct.grid, fct.phi);
+    for (int n = 0; n < 100; ++n) {
+        transport.step(fct.Phi, fct.Phi, fct.M, {}, dt, fct.phi);
+        transport_bulk(donor.grid, donor.Phi, donor.M, {}, dt, donor.phi);
+    }
+    BOOST_TEST(total_amount(fct.grid, fct.phi) == amount, tt::tolerance(1e-14));  // across the periodic face too
+    for (double v : fct.phi) {
+        BOOST_TEST(v >= -1e-15);
+        BOOST_TEST(v <= 0.6 + 1e-15);
+    }
+    // 100 steps at CFL 0.8 carry the step exactly twice around the column: back to the start.
+    BOOST_TEST(l1_distance(fct.phi, start) < l1_distance(donor.phi, start) / 2);
+}
+
+BOOST_AUTO_TEST_CASE(fct_leaves_a_uniform_mixture_uniform) {
+    PeriodicColumn c;
+    std::fill(c.phi.begin(), c.phi.end(), 0.3);
+    FctBulkTransport transport(c.grid);
+    transport.step(c.Phi, c.Phi, c.M, {}, bulk_time_step(c.grid, c.Phi, c.M, 1.0), c.phi);
+    for (double v : c.phi) BOOST_TEST(v == 0.3, tt::tolerance(1e-15));
+    BOOST_CHECK_THROW(parse_bulk_scheme("upwind"), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
