@@ -145,9 +145,18 @@ void FlowSolver::set_state(const std::vector<double>& Phi, const std::array<std:
     gradient_valid_ = false;
 }
 
+void FlowSolver::set_phi_hat(std::vector<double> phi_hat) {
+    if (!phi_hat.empty() && phi_hat.size() != grid_.cells())
+        throw std::invalid_argument("FlowSolver::set_phi_hat: need one value per grid cell");
+    for (std::size_t c : inside_cells_)
+        if (!phi_hat.empty() && !(phi_hat[c] >= 0.0 && phi_hat[c] <= 1.0))
+            throw InvariantError("flow: phi_hat = " + format_number(phi_hat[c]) + " outside [0, 1] at cell " +
+                                 std::to_string(c));
+    phi_hat_ = std::move(phi_hat);
+}
+
 std::array<double, 2> FlowSolver::packing(std::size_t cell) const {
-    double x = settings_.phi_hat;
-    if (phi_ && Phi_[cell] > settings_.Phi_vacuum) x = (*phi_)[cell] / Phi_[cell];
+    const double x = phi_hat_.empty() ? settings_.phi_hat : phi_hat_[cell];
     return {material_.packing.Phi_rcp(x), material_.packing.Phi_co(x)};
 }
 
@@ -172,11 +181,12 @@ void FlowSolver::compute_primitives() {
     const unsigned char* in = inside_.data();
     double *ux = u_[0].data(), *uy = u_[1].data(), *uz = u_[2].data(), *T = T_.data(), *p = p_.data(), *cs = c_.data();
     double *eta = eta_.data(), *lambda = lambda_.data(), *epsPhi = epsPhi_.data(), *rcp = Phi_rcp_.data(), *co = Phi_co_.data();
+    const bool per_cell = !phi_hat_.empty();
     long packed = 0;
 #pragma omp parallel for reduction(+ : packed) schedule(static) if (parallel_)
     for (std::size_t r = 0; r < rows_; ++r) {
         const std::size_t base = nx * r;
-        if (phi_)
+        if (per_cell)
             for (int i = row_lo_[r]; i < row_hi_[r]; ++i) {
                 const std::array<double, 2> lim = packing(base + i);
                 rcp[base + i] = lim[0], co[base + i] = lim[1];
@@ -189,7 +199,7 @@ void FlowSolver::compute_primitives() {
             const double inv = empty ? 0.0 : 1.0 / Phi[c];
             ux[c] = mx[c] * inv, uy[c] = my[c] * inv, uz[c] = mz[c] * inv;
             T[c] = empty ? T_floor : E[c] * inv;
-            const double Phi_rcp = phi_ ? rcp[c] : rcp0, Phi_co = phi_ ? co[c] : co0;
+            const double Phi_rcp = per_cell ? rcp[c] : rcp0, Phi_co = per_cell ? co[c] : co0;
             packed += Phi[c] < Phi_rcp ? 0 : 1;
             const ClosureValues v = evaluate_closures_at(mat, Phi[c], T[c], Phi_rcp, Phi_co);
             p[c] = v.p;

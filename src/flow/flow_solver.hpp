@@ -61,9 +61,10 @@ public:
     /// if a cell has Phi >= Phi_rcp.
     void set_state(const std::vector<double>& Phi, const std::array<std::vector<double>, 3>& u,
                    const std::vector<double>& T);
-    /// Optional small-particle field phi (same layout; the pointer must stay valid): Phi_rcp and
-    /// Phi_co then follow phi_hat = phi/Phi per cell. nullptr returns to settings.phi_hat.
-    void set_phi(const std::vector<double>* phi) { phi_ = phi; }
+    /// Small-particle share phi_hat = phi/Phi per cell (same layout, values in [0, 1], copied):
+    /// Phi_rcp and Phi_co then follow it cell by cell from the next step on. An empty vector
+    /// returns to the uniform settings.phi_hat.
+    void set_phi_hat(std::vector<double> phi_hat);
     /// Tangential velocity of the domain-boundary wall on `side` (0 lower, 1 upper) of `axis`.
     void set_wall_velocity(int axis, int side, const Vec3& U) { wall_velocity_[axis][side] = U; }
     void set_source(FlowSource source) { source_ = std::move(source); }
@@ -96,7 +97,7 @@ public:
 
     /// Total granular volume, sum of Phi times cell volume over inside cells.
     double mass() const;
-    /// Phi_rcp and Phi_co of a cell (from phi_hat of the phi field, or settings.phi_hat).
+    /// Phi_rcp and Phi_co of a cell (from the phi_hat field, or settings.phi_hat).
     std::array<double, 2> packing(std::size_t cell) const;
     const FlowTimers& timers() const { return timers_; }
 
@@ -159,7 +160,7 @@ private:
     Material material_;
     FlowSettings settings_;
     Frame frame_;
-    const std::vector<double>* phi_ = nullptr;
+    std::vector<double> phi_hat_;  // per cell, or empty: settings_.phi_hat everywhere
     std::array<std::array<Vec3, 2>, 3> wall_velocity_{};
     FlowSource source_;
     std::array<bool, 3> active_{};
