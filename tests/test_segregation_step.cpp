@@ -6,7 +6,7 @@
 #include "segregation/column.hpp"
 #include "segregation/invariants.hpp"
 #include "segregation/reconstruction.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 #include "tumbler/kinematic_flow.hpp"
 
 #include <boost/test/unit_test.hpp>

@@ -9,11 +9,10 @@
 
 #include "closures/packing.hpp"
 
-#include <string>
-
 namespace granseg {
 
-class SceneFile;
+/// Degree of the default packing fits (docs/assumptions.md A3: max residual 0.0022 on the table).
+constexpr int kDefaultPackingDegree = 4;
 
 /// The compressibility factor's functional form (eq. 18 substitute, docs/assumptions.md A1).
 enum class CompressibilityLaw {
@@ -38,10 +37,5 @@ struct Material {
     /// tau/p = sqrt(2 eta0 eps0 / 3); eq. (21) prints sqrt(eps0 eta0) (docs/assumptions.md A6).
     double shear_friction() const;
 };
-
-/// Reads the optional [material] section of a scene (every key defaults to glass_substitute()).
-/// Keys: eta0, lambda0, eps0, T0, rho_star, g_law ("power" | "lun-savage"), beta,
-/// packing_table (path, default built-in), packing_degree.
-Material read_material(const SceneFile& scene);
 
 }  // namespace granseg
