@@ -8,16 +8,19 @@
 #pragma once
 
 #include "closures/packing.hpp"
+#include "core/choice.hpp"
 
 namespace granseg {
 
 /// Degree of the default packing fits (docs/assumptions.md A3: max residual 0.0022 on the table).
 constexpr int kDefaultPackingDegree = 4;
 
-/// The compressibility factor's functional form (eq. 18 substitute, docs/assumptions.md A1).
-enum class CompressibilityLaw {
-    power,       // g = (1 - Phi/Phi_rcp)^(-beta), default beta = 1
-    lun_savage,  // g = (1 - Phi/Phi_rcp)^(-2.5 Phi_rcp) (Lun & Savage), i.e. beta = 2.5 Phi_rcp
+/// The compressibility factor's functional form (eq. 18 substitute, docs/assumptions.md A1);
+/// its exponent is compressibility_exponent() in closures.hpp.
+enum class CompressibilityLaw { power, lun_savage };
+inline constexpr Choice<CompressibilityLaw> kCompressibilityLaws[] = {
+    {CompressibilityLaw::power, "power", "g = (1 - Phi/Phi_rcp)^(-beta), beta = [material] beta (default 1)"},
+    {CompressibilityLaw::lun_savage, "lun-savage", "g = (1 - Phi/Phi_rcp)^(-2.5 Phi_rcp) (Lun & Savage)"},
 };
 
 struct Material {

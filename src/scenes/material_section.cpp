@@ -14,10 +14,9 @@ Material read_material(const SceneFile& scene) {
     m.eps0 = scene.number(s, "eps0", Range::above(0), m.eps0);
     m.T0 = scene.number(s, "T0", Range::at_least(0), m.T0);
     m.rho_star = scene.number(s, "rho_star", Range::above(0), m.rho_star);
-    const std::string law = scene.choice(s, "g_law", {"power", "lun-savage"}, "power");
-    m.g_law = law == "power" ? CompressibilityLaw::power : CompressibilityLaw::lun_savage;
+    m.g_law = parse_choice(kCompressibilityLaws, scene.choice(s, "g_law", choice_names(kCompressibilityLaws), "power"), "g_law");
     m.beta = scene.number(s, "beta", Range::left_open(0, 10), m.beta);
-    if (law != "power" && scene.has(s, "beta"))
+    if (m.g_law != CompressibilityLaw::power && scene.has(s, "beta"))
         scene.fail(s, "beta", "only used with g_law = \"power\"", "remove beta or set g_law = \"power\"");
 
     const std::string path = scene.text(s, "packing_table", "");

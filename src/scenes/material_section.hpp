@@ -8,7 +8,7 @@
 namespace granseg {
 
 /// Reads the optional [material] section of a scene (every key defaults to glass_substitute()).
-/// Keys: eta0, lambda0, eps0, T0, rho_star, g_law ("power" | "lun-savage"), beta,
+/// Keys: eta0, lambda0, eps0, T0, rho_star, g_law (a name of kCompressibilityLaws), beta,
 /// packing_table (path, default built-in), packing_degree. Bad values: scene.fail (InputError).
 Material read_material(const SceneFile& scene);
 

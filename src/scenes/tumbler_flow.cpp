@@ -55,7 +55,7 @@ struct TumblerFlow : SceneJob {
             if (solver.time() >= next_history - 1e-12 || solver.time() >= t_end) {
                 next_history += 0.05;
                 const DrumState d = drum_state(solver, Phi_level, 0.8 * R, v_flow);
-                if (solver.time() >= angle_from) late_angles.push_back(d.surface_angle_deg);
+                if (solver.time() >= angle_from && std::isfinite(d.surface_angle_deg)) late_angles.push_back(d.surface_angle_deg);
                 history.row({solver.time(), static_cast<double>(solver.steps()), d.surface_angle_deg,
                              static_cast<double>(d.surface_points), d.flowing_fraction, d.max_speed, d.kinetic_energy,
                              solver.mass(), solver.mass() / mass0 - 1.0, solver.last_dt()});

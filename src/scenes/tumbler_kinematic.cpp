@@ -56,7 +56,7 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     k.segregation.limiter = parse_limiter(scene.choice("segregation", "limiter", limiter_names(), "mc"));
     if (!preserves_bounds(k.segregation.scheme))
         scene.fail("segregation", "scheme", "\"" + scheme_name(k.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
-                   "modified-godunov, modified-godunov-2");
+                   bounded_scheme_names());
     k.bulk = parse_bulk_scheme(scene.choice("bulk", "scheme", bulk_scheme_names(), "fct"));
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     k.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
