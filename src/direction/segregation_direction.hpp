@@ -100,7 +100,7 @@ CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vect
                                  const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                  const DirectionOptions& options = {});
 
-/// The whole procedure. Throws std::invalid_argument if grad or u has a non-finite entry.
+/// The whole procedure. Throws InputError if grad or u has a non-finite entry.
 SegregationDirection segregation_direction(const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                            const DirectionOptions& options = {});
 

@@ -18,7 +18,7 @@ inline double gamma_phi(double Phi) { return 0.5 * Phi; }
 inline double flux_extremum(double Phi, double a) { return -0.25 * a * Phi; }
 
 /// The phi in [0, Phi/2] (left of Gamma) with f(phi; Phi, a) = F; F must lie between 0 and
-/// -a Phi/4 (a few ulps outside are clamped; further outside throws std::invalid_argument).
+/// -a Phi/4 (a few ulps outside are clamped; further outside throws InputError).
 /// Evaluated without cancellation near phi = 0: phi = -2F / (a (1 + sqrt(1 + 4F/(a Phi)))).
 double phi_left_of_gamma(double F, double Phi, double a);
 

@@ -49,7 +49,7 @@ struct RiemannSolution {
 };
 
 /// Solves the Riemann problem (52), (60) exactly for states with 0 <= phi <= Phi, Phi > 0, and
-/// coefficients a of any sign. Throws std::invalid_argument for states outside that set.
+/// coefficients a of any sign. Throws InputError for states outside that set.
 RiemannSolution solve_riemann(const FluxSide& L, const FluxSide& R);
 
 /// "shock", "rarefaction" or "standing".

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -13,7 +12,7 @@ namespace {
 
 void check_face_field(const Grid& grid, int axis, const std::vector<double>& field, const char* what) {
     if (!field.empty() && field.size() != grid.faces(axis))
-        throw std::invalid_argument(std::string("bulk transport: ") + what + " needs one value per face");
+        throw InputError(std::string("bulk transport: ") + what + " needs one value per face");
 }
 
 /// G = M phi_hat(donor) on every face of `axis` (see the header).
@@ -41,7 +40,7 @@ std::vector<double> donor_cell_fluxes(const Grid& grid, int axis, const std::vec
             G[f.face] = m * composition(phi[donor], Phi_old[donor]);
         } else {
             if (inflow.empty())
-                throw std::invalid_argument("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
+                throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
             G[f.face] = m * inflow[f.face];
         }
     });
@@ -53,7 +52,7 @@ std::vector<double> donor_cell_fluxes(const Grid& grid, int axis, const std::vec
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
                     const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi) {
     if (Phi_old.size() != grid.cells() || phi.size() != grid.cells())
-        throw std::invalid_argument("bulk transport: Phi_old and phi need one value per cell");
+        throw InputError("bulk transport: Phi_old and phi need one value per cell");
     FaceFields G;
     for (int axis = 0; axis < 3; ++axis) {  // every flux from the old phi: unsplit
         if (M[axis].empty()) continue;
@@ -92,7 +91,7 @@ double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, cons
 }
 
 FaceFields stream_function_mass_fluxes(const Grid& grid, const std::function<double(double, double)>& psi) {
-    if (grid.n[1] != 1) throw std::invalid_argument("stream function: needs a grid in the x-z plane (ny = 1)");
+    if (grid.n[1] != 1) throw InputError("stream function: needs a grid in the x-z plane (ny = 1)");
     const int nx = grid.n[0], nz = grid.n[2];
     std::vector<double> corner(static_cast<std::size_t>(nx + 1) * (nz + 1));
     const auto at = [nx](int i, int k) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx + 1) * k; };

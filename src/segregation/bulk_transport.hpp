@@ -22,7 +22,7 @@ namespace granseg {
 /// One bulk step (see above), in place. M: face mass fluxes per axis (an empty vector: none along
 /// that axis). inflow_phi_hat: phi_hat entering through open boundary faces (face fields; may
 /// be empty where nothing enters). Throws InvariantError if M != 0 on a face next to an outside
-/// cell, std::invalid_argument if inflow has no phi_hat or a field has the wrong size.
+/// cell, InputError if inflow has no phi_hat or a field has the wrong size.
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
                     const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi);
 

@@ -40,7 +40,7 @@ struct Column {
 };
 
 /// The grid and the frozen fields of a column (Phi, T evaluated at the centres; at the faces as
-/// the interface rule says). Throws std::invalid_argument if a value is out of range.
+/// the interface rule says). Throws InputError if a value is out of range.
 Column make_column(const ColumnSetup& setup);
 
 /// phi0 evaluated at the cell centres.

@@ -27,7 +27,7 @@ struct FrozenFields {
     double D = 0.0;
 };
 
-/// Throws std::invalid_argument with a one-line reason if a field has the wrong size or holds
+/// Throws InputError with a one-line reason if a field has the wrong size or holds
 /// a value outside its range (Phi in [0, 1), finite a, D >= 0).
 void check_frozen_fields(const Grid& grid, const FrozenFields& fields);
 

@@ -48,7 +48,7 @@ struct SegregationOptions {
 
 class SegregationSolver {
 public:
-    /// Throws std::invalid_argument (one line) if options.cfl is outside (0, 1].
+    /// Throws InputError (one line) if options.cfl is outside (0, 1].
     SegregationSolver(Grid grid, SegregationOptions options);
 
     /// cfl * dt_max (see above); +infinity if no coefficient and no diffusion is non-zero.

@@ -48,7 +48,7 @@ struct RollingDrumParameters {
 
 class RollingDrumFlow {
 public:
-    /// Throws std::invalid_argument naming the parameter if one is out of range (0 < diameter,
+    /// Throws InputError naming the parameter if one is out of range (0 < diameter,
     /// 0 < fill_fraction < 1, rotation_rate != 0, 0 <= repose_angle < 90, 0 < delta0 < min(L, R + d)).
     explicit RollingDrumFlow(const RollingDrumParameters& parameters);
 

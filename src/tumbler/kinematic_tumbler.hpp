@@ -45,7 +45,7 @@ struct KinematicTumblerSetup {
 
 class KinematicTumbler {
 public:
-    /// Builds the grid, the mass fluxes and a_k. Throws std::invalid_argument if a value is out
+    /// Builds the grid, the mass fluxes and a_k. Throws InputError if a value is out
     /// of range (the drum parameters, Phi outside (0, 1), phi_hat0 outside [0, 1] at a bed cell).
     explicit KinematicTumbler(const KinematicTumblerSetup& setup);
 

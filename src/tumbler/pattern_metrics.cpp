@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace granseg {
 
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial) {
-    if (grid.n[1] != 1) throw std::invalid_argument("pattern metrics: needs a grid in the x-z plane");
+    if (grid.n[1] != 1) throw InputError("pattern metrics: needs a grid in the x-z plane");
     double small[3] = {0, 0, 0}, all[3] = {0, 0, 0}, bed_small = 0, bed_all = 0, sum = 0, sum2 = 0;
     long count = 0;
     PatternMetrics m;
@@ -39,7 +38,7 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
 
 ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                            double radius, int shells) {
-    if (shells < 1 || !(radius > 0.0)) throw std::invalid_argument("shell profile: needs shells >= 1 and radius > 0");
+    if (shells < 1 || !(radius > 0.0)) throw InputError("shell profile: needs shells >= 1 and radius > 0");
     std::vector<double> r_sum(shells, 0.0), small(shells, 0.0), all(shells, 0.0);
     ShellProfile p;
     p.cells.assign(shells, 0);
