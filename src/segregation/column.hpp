@@ -2,6 +2,11 @@
 // [0, length] with zero-flux ends, z up and gravity down, given profiles Phi(z) and T(z), plus
 // optional remixing D (beyond the paper). Shared by the segregation1d scene, the verification
 // programs and the benchmark, so they all run exactly the same discretisation.
+//
+//   solves      nothing over time: sets up eq. (66) on a column for SegregationSolver
+//   inputs      ColumnSetup: cells, length, S, D, the profiles Phi(z), T(z), the interface rule
+//   outputs     Column: the grid and FrozenFields (Phi and a_z = S sqrt(T) at centres and faces)
+//   invariants  0 < Phi < 1 and T >= 0 wherever they are read (InputError otherwise)
 #pragma once
 
 #include "core/choice.hpp"
