@@ -1,48 +1,27 @@
-# Cost of the flow solver on the tumbler-flow drum (make bench).
+# Cost of the flow solver on the tumbler-flow drum, both time-stepping modes (make bench).
 # needs: bench_flow
-# Data: bench_flow.dat (cells_per_diameter threads inside_cells Mcell_updates_per_s dt
-#       steps_for_25s seconds_for_25s share_closures share_convection share_viscosity share_temperature).
+# Data: bench_flow.dat (semi_implicit cells_per_diameter threads inside_cells ns_per_cell_step dt
+#       steps_per_drum_second wall_per_drum_second seconds_for_25s newton_per_solve krylov_per_newton
+#       share_closures share_convection share_pressure share_viscosity share_temperature ratio_explicit_to_semi).
 set terminal pngcairo size 1500,480 font "Sans,11" noenhanced
 set output outfile
-set multiplot layout 1,3 title "Flow solver on the tumbler-flow drum: medians of 5 windows from the initial state"
+set multiplot layout 1,3 title "Flow solver on the tumbler-flow drum, from its initial state: medians of 5 windows"
 set grid
 f = benchdir.'/bench_flow.dat'
-set title "(a) cell updates per second"
-set xlabel "cells per diameter"
-set ylabel "Mcell-updates/s"
 set logscale x
 set xrange [40:250]
-set key bottom left
-# rows alternate: 1 thread, 2 threads
-plot f every 2::0 u 1:4 w lp pt 7 t "1 thread", f every 2::1 u 1:4 w lp pt 5 t "2 threads"
-set title "(b) time step and estimated wall time for 25 s"
-set ylabel "dt [s]"
-set y2label "wall time for 25 s [s]"
-set logscale y
-set logscale y2
-set ytics nomirror
-set y2tics
-set key bottom left
-set y2range [10:1e4]
-plot f every 2::0 u 1:5 w lp pt 7 t "dt (CFL 0.9 on |u|+c)", \
-     f every 2::0 u 1:7 axes x1y2 w lp pt 6 t "25 s, 1 thread", \
-     f every 2::1 u 1:7 axes x1y2 w lp pt 4 t "25 s, 2 threads", 60 axes x1y2 w l dt 2 lc rgb "black" t "target 60 s"
-unset logscale y
-unset logscale y2
-unset y2tics
-unset y2label
-set ytics mirror
-set title "(c) share of the step time (1 thread)"
-set style data histograms
-set style histogram rowstacked
-set style fill solid 0.8 border -1
-set boxwidth 0.6
-unset logscale x
-set xrange [*:*]
-set yrange [0:1]
 set xlabel "cells per diameter"
-set ylabel "share"
-set key outside right
-plot f every 2::0 u 8:xtic(1) t "closures", '' every 2::0 u 9 t "convection", \
-     '' every 2::0 u 10 t "viscosity", '' every 2::0 u 11 t "temperature"
+set key top left
+# rows per size: explicit 1 thread, semi 1 thread, explicit 2 threads, semi 2 threads
+set title "(a) cost of one step"
+set ylabel "ns per cell and step"
+plot f every 4::0 u 2:5 w lp pt 7 t "explicit, 1 thread", f every 4::1 u 2:5 w lp pt 5 t "semi-implicit, 1 thread", \
+     f every 4::2 u 2:5 w lp pt 6 t "explicit, 2 threads", f every 4::3 u 2:5 w lp pt 4 t "semi-implicit, 2 threads"
+set title "(b) steps per second of drum time"
+set ylabel "steps per drum second"
+set logscale y
+plot f every 4::0 u 2:7 w lp pt 7 t "explicit (sound speed)", f every 4::1 u 2:7 w lp pt 5 t "semi-implicit (dt_max)"
+set title "(c) wall time per second of drum time, 2 threads"
+set ylabel "wall seconds per drum second"
+plot f every 4::2 u 2:8 w lp pt 6 t "explicit", f every 4::3 u 2:8 w lp pt 4 t "semi-implicit", 30.0/25 w l dt 2 lc rgb "black" t "target 30 s for 25 s"
 unset multiplot

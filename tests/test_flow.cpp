@@ -1,6 +1,8 @@
 // Building blocks of the flow solver (src/flow/): the HLLC flux, the hydrostatic reconstruction,
-// the batched line solver, the rotating frame and the drum geometry.
+// the batched line solver, the rotating frame, the drum geometry, and the inverse equation of
+// state of the semi-implicit step.
 #include "flow/bed.hpp"
+#include "flow/equation_of_state.hpp"
 #include "flow/flow_output.hpp"
 #include "flow/flow_solver.hpp"
 #include "flow/frame.hpp"
@@ -205,3 +207,25 @@ BOOST_AUTO_TEST_CASE(flow_scenes_reject_bad_values_with_one_line) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(volume_at_pressure_inverts_the_equation_of_state) {
+    // Phi(p(Phi)) = Phi for both compressibility laws, on both branches and near Phi_rcp; the
+    // slope is 1/c^2; Phi(p) is concave (slopes decrease) and continued by its tangent below 0.
+    for (const CompressibilityLaw law : {CompressibilityLaw::power, CompressibilityLaw::lun_savage}) {
+        Material m = Material::glass_substitute();
+        m.g_law = law;
+        const double rcp = m.packing.Phi_rcp(0.5), co = m.packing.Phi_co(0.5), T = 1e-6;
+        double last_slope = INFINITY;
+        for (const double Phi : {0.2 * co, 0.6 * co, co - 1e-3, co + 1e-3, 0.5 * (co + rcp), rcp - 1e-4}) {
+            const ClosureValues v = evaluate_closures_at(m, Phi, T, rcp, co);
+            const VolumeAtPressure w = volume_at_pressure(m, v.p, T, rcp, co);
+            BOOST_TEST(w.Phi == Phi, tt::tolerance(1e-12));
+            BOOST_TEST(w.slope == 1.0 / v.c2, tt::tolerance(1e-6));
+            BOOST_TEST(w.slope < last_slope);
+            last_slope = w.slope;
+        }
+        const VolumeAtPressure below = volume_at_pressure(m, -2e-7, T, rcp, co);
+        BOOST_TEST(below.Phi == -2e-7 / T, tt::tolerance(1e-14));
+        BOOST_TEST(volume_at_pressure(m, 1e9, T, rcp, co).Phi < rcp);
+    }
+}

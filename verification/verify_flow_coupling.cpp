@@ -8,6 +8,8 @@
 //      settles to the lithostatic profile of the phi_hat = 0.2 packing limits (GSL odeiv2), not to
 //      the one of the default mixture.
 //
+// Every check runs in both time-stepping modes (explicit, semi-implicit) with the same tolerance.
+//
 // Run: build/verification/verify_flow_coupling [--data DIR]   (a few seconds)
 #include "closures/closures.hpp"
 #include "flow/bed.hpp"
@@ -28,10 +30,11 @@ namespace {
 // magnitudes involved, Phi_old + dt sum |M|/h.
 constexpr double kIdentityUlps = 8 * DBL_EPSILON;
 
-void drum_handover(CheckTable& table, const Material& m) {
+void drum_handover(CheckTable& table, const Material& m, TimeStepping mode) {
     const int n = 24, ny = 2;
     const Grid g = drum_grid(n, 0.05, ny, 2 * 0.1 / n);
     FlowSettings s;
+    s.time_stepping = mode;
     Frame f;
     f.omega = 2.0 * M_PI * 0.1;
     FlowSolver solver(g, m, s, f);
@@ -81,19 +84,21 @@ void drum_handover(CheckTable& table, const Material& m) {
         for (int k = 0; k < n; ++k)
             for (int i = 0; i < n; ++i) periodic = std::max(periodic, std::fabs(My[g.face_index(1, i, 0, k)] - My[g.face_index(1, i, ny, k)]));
     }
-    table.note("drum 24 x 2 x 24, phi_hat = 0.3, 3 s: " + std::to_string(solver.steps()) + " steps checked");
-    table.at_most("identity: max |Phi_new - (Phi_old - dt div M)| / (Phi_old + dt sum|M|/h)", identity, kIdentityUlps);
-    table.near("M on wall faces, max |M|", wall, 0.0, 0.0);
-    table.near("periodic end faces: max |M(layer 0) - M(layer ny)|", periodic, 0.0, 0.0);
-    table.at_most("outflow condition: max (dt sum_outflow M/h - Phi_old)", outflow, 0.0);
-    table.count("non-finite T, u or velocity gradient handed over", bad_fields, 0);
+    const std::string tag = verify::mode_tag(mode);
+    table.note(tag + "drum 24 x 2 x 24, phi_hat = 0.3, 3 s: " + std::to_string(solver.steps()) + " steps checked");
+    table.at_most(tag + "identity: max |Phi_new - (Phi_old - dt div M)| / (Phi_old + dt sum|M|/h)", identity, kIdentityUlps);
+    table.near(tag + "M on wall faces, max |M|", wall, 0.0, 0.0);
+    table.near(tag + "periodic end faces: max |M(layer 0) - M(layer ny)|", periodic, 0.0, 0.0);
+    table.at_most(tag + "outflow condition: max (dt sum_outflow M/h - Phi_old)", outflow, 0.0);
+    table.count(tag + "non-finite T, u or velocity gradient handed over", bad_fields, 0);
 }
 
-void packing_follows_phi(CheckTable& table, const Material& m) {
+void packing_follows_phi(CheckTable& table, const Material& m, TimeStepping mode) {
     const int nz = 30;
     const double height = 0.06, x = 0.2;
     Grid g = Grid::column(nz, height);
     FlowSettings s;
+    s.time_stepping = mode;
     s.T_floor = 1e-8;  // fast settling, as in verify_flow_rest
     FlowSolver solver(g, m, s, Frame{});
     std::vector<double> Phi(nz, 0.0), zero(nz, 0.0), T(nz, s.T_floor);
@@ -117,8 +122,8 @@ void packing_follows_phi(CheckTable& table, const Material& m) {
     }
     // A solver that ignored phi would settle to the default mixture's profile, `separation` away;
     // at this resolution the discretisation error is ~1.5e-7 (verify_flow_rest), four orders below.
-    table.note("lithostatic profiles for phi_hat = 0.2 and 0.5 (GSL) differ by up to " + verify::format(separation));
-    table.at_most("column with phi_hat = 0.2: max |Phi - Phi_lithostatic(0.2)| / that", err_own / separation, 1e-3);
+    table.note(verify::mode_tag(mode) + "lithostatic profiles for phi_hat = 0.2 and 0.5 (GSL) differ by up to " + verify::format(separation));
+    table.at_most(verify::mode_tag(mode) + "column with phi_hat = 0.2: max |Phi - Phi_lithostatic(0.2)| / that", err_own / separation, 1e-3);
 }
 
 }  // namespace
@@ -126,7 +131,9 @@ void packing_follows_phi(CheckTable& table, const Material& m) {
 int main(int argc, char** argv) {
     const Material m = verify::flow_program(argc, argv).material;
     CheckTable table("Sect. 2.1 flow: hand-over to the segregation solver (coupling contract)");
-    drum_handover(table, m);
-    packing_follows_phi(table, m);
+    for (const TimeStepping mode : verify::kFlowModes) {
+        drum_handover(table, m, mode);
+        packing_follows_phi(table, m, mode);
+    }
     return table.finish();
 }

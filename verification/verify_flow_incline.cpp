@@ -18,7 +18,9 @@
 //   4. at the critical angle the profiles converge to the boundary-value solution: the relative
 //      spread of T in the bed falls at first order, u is linear with slope mu sqrt(T)/eta0 (T the
 //      bed's mean), and Phi follows the GSL odeiv2 lithostatic profile for the simulated T(z).
-// Writes flow_incline_*.dat for figures/fig_flow_incline.gp.
+// Every check runs in both time-stepping modes (explicit, semi-implicit) with the same tolerance.
+// Writes flow_incline_*.dat (explicit mode; the semi-implicit mode adds _semi_implicit) for
+// figures/fig_flow_incline.gp.
 //
 // Run: build/verification/verify_flow_incline [--data DIR]   (about 10 s)
 #include "closures/closures.hpp"
@@ -53,11 +55,12 @@ struct Incline {
     double T_max = 0.0;
 };
 
-Incline run(const Material& m, double theta_deg, int nz, double t_end) {
+Incline run(const Material& m, TimeStepping mode, double theta_deg, int nz, double t_end) {
     const double theta = theta_deg * M_PI / 180.0;
     Grid g = Grid::column(nz, kDomain);
     g.periodic[0] = true;
     FlowSettings s;
+    s.time_stepping = mode;
     Frame f;
     f.gravity = kGravity;
     f.tilt = theta;
@@ -89,11 +92,11 @@ Incline run(const Material& m, double theta_deg, int nz, double t_end) {
 }
 
 /// The solver's critical angle: bisection on the sign of the kinetic-energy trend (0.002 degrees).
-double critical_angle(const Material& m, int nz) {
+double critical_angle(const Material& m, TimeStepping mode, int nz) {
     double lo = 20.0, hi = 24.0;
     for (int it = 0; it < 11; ++it) {
         const double mid = 0.5 * (lo + hi);
-        const Incline r = run(m, mid, nz, kWindow[1]);
+        const Incline r = run(m, mode, mid, nz, kWindow[1]);
         (r.kinetic[1] > r.kinetic[0] ? hi : lo) = mid;
     }
     return 0.5 * (lo + hi);
@@ -102,24 +105,20 @@ double critical_angle(const Material& m, int nz) {
 /// Bed cells: those holding at least half of Phi_co (the surface cell and dust are left out).
 bool in_bed(const Material& m, double Phi) { return Phi >= 0.5 * m.packing.Phi_co(FlowSettings{}.phi_hat); }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    const auto [options, m] = verify::flow_program(argc, argv);
+/// Every check of this program in one time-stepping mode.
+void check_mode(CheckTable& table, const verify::ProgramOptions& options, const Material& m, TimeStepping mode) {
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0), theta_mu = std::atan(mu) * 180.0 / M_PI;
-    CheckTable table("Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)");
-
     // 1. Critical angle against atan(mu).
     const int sizes[] = {16, 32, 64};
     double crit[3];
     DataTable angles({"nz", "theta_c_deg", "atan_mu_deg"});
     for (int i = 0; i < 3; ++i) {
-        crit[i] = critical_angle(m, sizes[i]);
+        crit[i] = critical_angle(m, mode, sizes[i]);
         angles.row({static_cast<double>(sizes[i]), crit[i], theta_mu});
-        table.note("nz = " + std::to_string(sizes[i]) + ": critical angle " + verify::format(crit[i]) + " deg");
+        table.note(verify::mode_tag(mode) + "nz = " + std::to_string(sizes[i]) + ": critical angle " + verify::format(crit[i]) + " deg");
     }
     for (int i = 1; i < 3; ++i)
-        table.at_least("critical angle -> atan(mu): order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
+        table.at_least(verify::mode_tag(mode) + "critical angle -> atan(mu): order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
                        std::log2(std::fabs(crit[i - 1] - theta_mu) / std::fabs(crit[i] - theta_mu)), kOrderMin);
 
     // 2. Below the friction angle: the flow stops; the remaining creep is set by T_floor.
@@ -129,8 +128,8 @@ int main(int argc, char** argv) {
     DataTable below({"nz", "z", "u_x", "u_creep_law", "T"});
     for (int i = 0; i < 2; ++i) {
         const int nz = 40 << i;
-        const Incline r = run(m, theta, nz, kWindow[1]);
-        const Incline start = run(m, theta, nz, 0.0);
+        const Incline r = run(m, mode, theta, nz, kWindow[1]);
+        const Incline start = run(m, mode, theta, nz, 0.0);
         double worst = 0.0;
         for (int k = 0; k < nz; ++k) {
             below.row({static_cast<double>(nz), r.z[k], r.u[k], in_bed(m, r.Phi[k]) ? creep * r.z[k] : 0.0, r.T[k]});
@@ -139,23 +138,23 @@ int main(int argc, char** argv) {
         below.blank();
         below.blank();  // gnuplot index
         creep_error[i] = worst;
-        const std::string tag = "18 deg, nz = " + std::to_string(nz) + ": ";
+        const std::string tag = verify::mode_tag(mode) + "18 deg, nz = " + std::to_string(nz) + ": ";
         table.at_most(tag + "kinetic energy at 1.5 s / at 0 s", r.kinetic[1] / start.kinetic[0], kStopFactor);
         table.near_relative(tag + "max T / T_floor (flow stopped)", r.T_max / T_floor, 1.0, 1e-9);
         table.note(tag + "max |u - tan(theta) sqrt(T_floor) z/eta0| / (gamma_dot_creep depth) = " + verify::format(worst));
     }
-    table.at_least("18 deg: creep law error, order nz = 40 -> 80", std::log2(creep_error[0] / creep_error[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "18 deg: creep law error, order nz = 40 -> 80", std::log2(creep_error[0] / creep_error[1]), kOrderMin);
 
     // 3. Above the friction angle the layer accelerates.
-    const Incline fast = run(m, 26.0, 32, kWindow[1]);
-    table.at_least("26 deg: kinetic energy at 1.5 s / at 0.5 s (growth)", fast.kinetic[1] / fast.kinetic[0], 1.0);
+    const Incline fast = run(m, mode, 26.0, 32, kWindow[1]);
+    table.at_least(verify::mode_tag(mode) + "26 deg: kinetic energy at 1.5 s / at 0.5 s (growth)", fast.kinetic[1] / fast.kinetic[0], 1.0);
 
     // 4. At the critical angle: the profiles against the boundary-value solution.
     DataTable profiles({"nz", "z", "Phi", "Phi_bvp", "u_x", "u_bvp", "T", "T_bvp"});
     double spread[2], u_errors[2], Phi_errors[2];
     for (int i = 1; i < 3; ++i) {
         const int nz = sizes[i];
-        const Incline r = run(m, crit[i], nz, 2.0);
+        const Incline r = run(m, mode, crit[i], nz, 2.0);
         double T_min = INFINITY, T_max = 0.0, PhiT = 0.0, mass = 0.0, bed_mass = 0.0;
         for (int k = 0; k < nz; ++k) {
             mass += r.Phi[k] * kDomain / nz;
@@ -185,15 +184,24 @@ int main(int argc, char** argv) {
         profiles.blank();  // gnuplot index
         spread[i - 1] = (T_max - T_min) / T_max;
         u_errors[i - 1] = u_err, Phi_errors[i - 1] = Phi_err;
-        const std::string tag = "critical angle, nz = " + std::to_string(nz) + ": ";
+        const std::string tag = verify::mode_tag(mode) + "critical angle, nz = " + std::to_string(nz) + ": ";
         table.note(tag + "relative spread of T in the bed " + verify::format(spread[i - 1]) + ", max |u - u_bvp|/u_bvp(depth) " +
                    verify::format(u_err) + ", max |Phi - Phi_bvp(GSL)| " + verify::format(Phi_err));
     }
-    table.at_least("critical angle: T spread -> 0 (uniform T), order nz = 32 -> 64", std::log2(spread[0] / spread[1]), kOrderMin);
-    table.at_least("critical angle: u -> u_bvp, order nz = 32 -> 64", std::log2(u_errors[0] / u_errors[1]), kOrderMin);
-    table.at_least("critical angle: Phi -> Phi_bvp, order nz = 32 -> 64", std::log2(Phi_errors[0] / Phi_errors[1]), kOrderMin);
-    verify::write_data(options, "flow_incline_angles.dat", angles);
-    verify::write_data(options, "flow_incline_below.dat", below);
-    verify::write_data(options, "flow_incline_profiles.dat", profiles);
+    table.at_least(verify::mode_tag(mode) + "critical angle: T spread -> 0 (uniform T), order nz = 32 -> 64", std::log2(spread[0] / spread[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "critical angle: u -> u_bvp, order nz = 32 -> 64", std::log2(u_errors[0] / u_errors[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "critical angle: Phi -> Phi_bvp, order nz = 32 -> 64", std::log2(Phi_errors[0] / Phi_errors[1]), kOrderMin);
+    verify::write_data(options, "flow_incline_angles" + verify::mode_suffix(mode) + ".dat", angles);
+    verify::write_data(options, "flow_incline_below" + verify::mode_suffix(mode) + ".dat", below);
+    verify::write_data(options, "flow_incline_profiles" + verify::mode_suffix(mode) + ".dat", profiles);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const auto [options, m] = verify::flow_program(argc, argv);
+    const double theta_mu = std::atan(std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0)) * 180.0 / M_PI;
+    CheckTable table("Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)");
+    for (const TimeStepping mode : verify::kFlowModes) check_mode(table, options, m, mode);
     return table.finish();
 }

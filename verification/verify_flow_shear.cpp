@@ -12,7 +12,9 @@
 // yield regime (Phi = Phi_co + 0.01) and for gamma_dot = 100 1/s in the kinetic regime
 // (Phi = Phi_co - 0.05). The expected values are the closed forms above; the measured ones come
 // from the solver's fields through the closures (tau = eta (u_(k+1) - u_k)/h, p, p_k).
-// Writes flow_shear.dat for figures/fig_flow_shear.gp.
+// Every check runs in both time-stepping modes (explicit, semi-implicit) with the same tolerance.
+// Writes flow_shear_*.dat (explicit mode; the semi-implicit mode adds _semi_implicit) for
+// figures/fig_flow_shear.gp.
 //
 // Run: build/verification/verify_flow_shear [--data DIR]   (a few seconds)
 #include "closures/closures.hpp"
@@ -45,9 +47,11 @@ struct Shear {
     double T, tau_over_p, p_k, linear_error, T_spread;
 };
 
-Shear run(const Material& m, double Phi, double gamma_dot, double T0, double t_end, DataTable& profiles) {
+Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, double T0, double t_end,
+          DataTable& profiles) {
     const Grid g = Grid::column(kCells, kHeight);
     FlowSettings s;
+    s.time_stepping = mode;
     FlowSolver solver(g, m, s, Frame{0.0});
     const double U = gamma_dot * kHeight;
     solver.set_wall_velocity(2, 0, {-0.5 * U, 0.0, 0.0});
@@ -76,11 +80,8 @@ Shear run(const Material& m, double Phi, double gamma_dot, double T0, double t_e
     return r;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    const auto [options, m] = verify::flow_program(argc, argv);
-    CheckTable table("Sect. 2.1 flow (b): homogeneous simple shear (eq. 45)");
+/// Every check of this program in one time-stepping mode.
+void check_mode(CheckTable& table, const verify::ProgramOptions& options, const Material& m, TimeStepping mode) {
     const double co = m.packing.Phi_co(FlowSettings{}.phi_hat);
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0);
     DataTable profiles({"gamma_dot", "Phi", "z", "u_x", "T", "p"});
@@ -101,9 +102,9 @@ int main(int argc, char** argv) {
     double lx[3], ly[3];
     int n = 0;
     for (const Case& c : cases) {
-        const Shear r = run(m, c.Phi, c.gamma_dot, c.T0, c.t_end, profiles);
+        const Shear r = run(m, mode, c.Phi, c.gamma_dot, c.T0, c.t_end, profiles);
         const double T_eq = 3.0 * m.eta0 * c.gamma_dot * c.gamma_dot / (2.0 * m.eps0);  // eq. (45)
-        const std::string tag = std::string(c.regime) + ", gamma_dot = " + verify::format(c.gamma_dot) + ": ";
+        const std::string tag = verify::mode_tag(mode) + c.regime + ", gamma_dot = " + verify::format(c.gamma_dot) + ": ";
         table.near_relative(tag + "T vs 3 eta0 gamma_dot^2/(2 eps0)", r.T, T_eq, kSteadyTol);
         table.near_relative(tag + "tau/p vs sqrt(2 eta0 eps0/3)", r.tau_over_p, mu, kSteadyTol);
         table.at_most(tag + "(T_max - T_min)/T_max", r.T_spread, kSteadyTol);
@@ -117,8 +118,16 @@ int main(int argc, char** argv) {
     const double mx = (lx[0] + lx[1] + lx[2]) / 3, my = (ly[0] + ly[1] + ly[2]) / 3;
     double sxy = 0, sxx = 0;
     for (int i = 0; i < 3; ++i) sxy += (lx[i] - mx) * (ly[i] - my), sxx += (lx[i] - mx) * (lx[i] - mx);
-    table.near("yield: d ln p_k / d ln gamma_dot over 1..100 1/s", sxy / sxx, 2.0, 2 * kSteadyTol);
-    verify::write_data(options, "flow_shear_profiles.dat", profiles);
-    verify::write_data(options, "flow_shear_scan.dat", scan);
+    table.near(verify::mode_tag(mode) + "yield: d ln p_k / d ln gamma_dot over 1..100 1/s", sxy / sxx, 2.0, 2 * kSteadyTol);
+    verify::write_data(options, "flow_shear_profiles" + verify::mode_suffix(mode) + ".dat", profiles);
+    verify::write_data(options, "flow_shear_scan" + verify::mode_suffix(mode) + ".dat", scan);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const auto [options, m] = verify::flow_program(argc, argv);
+    CheckTable table("Sect. 2.1 flow (b): homogeneous simple shear (eq. 45)");
+    for (const TimeStepping mode : verify::kFlowModes) check_mode(table, options, m, mode);
     return table.finish();
 }

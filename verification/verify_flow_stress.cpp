@@ -10,6 +10,11 @@
 //   4. a drum at rest starting to turn at 1 rps in one step (10 times the tumbler's rate), with a
 //      cloud of cold dust (Phi = 0.01, T = 0) above the bed.
 //
+// Every case runs in both time-stepping modes; the semi-implicit mode also at the largest dt its
+// bound allows and above it (5.). Where the semi-implicit mode stops with an InvariantError (a
+// known defect, docs/flow_solver.md Sect. 5) that is reported, the other invariants are checked.
+//   5. the dam break in the semi-implicit mode at cfl = 1 and 2 on the material speed.
+//
 // Run: build/verification/verify_flow_stress [--data DIR]   (about 10 s)
 #include "closures/closures.hpp"
 #include "core/error.hpp"
@@ -60,8 +65,13 @@ Outcome run(FlowSolver& solver, double t_end) {
     return o;
 }
 
-void check_clean(CheckTable& table, const std::string& tag, const Outcome& o, double T_floor) {
-    table.count(tag + ": runs to the end (InvariantError count)", o.error.empty() ? 0 : 1, 0);
+/// The invariants over the run; `must_finish`: whether stopping with an InvariantError is a
+/// failure (a known defect of the semi-implicit mode where it is not, docs/flow_solver.md).
+void check_clean(CheckTable& table, const std::string& tag, const Outcome& o, double T_floor, bool must_finish = true) {
+    if (must_finish)
+        table.count(tag + ": runs to the end (InvariantError count)", o.error.empty() ? 0 : 1, 0);
+    else
+        table.note(tag + ": " + verify::kKnownDefect + "runs to the end: " + (o.error.empty() ? "yes" : "no"));
     if (!o.error.empty()) table.note(tag + ": " + o.error);
     table.count(tag + ": non-finite values after any step", o.finite ? 0 : 1, 0);
     table.at_least(tag + ": min Phi over the run", o.Phi_min, 0.0);
@@ -72,12 +82,12 @@ void check_clean(CheckTable& table, const std::string& tag, const Outcome& o, do
 
 /// A box 4 cm x 4 cm (32 x 32) with blocks of volume fraction `dense` where block(x, z) != 0,
 /// moving at block(x, z) * speed along x, at T = 0, under gravity |g| = `gravity`.
-FlowSolver boxes(const Material& m, const std::function<int(double, double)>& block, double speed, double dense,
-                 double gravity) {
+FlowSolver boxes(const Material& m, const FlowSettings& s, const std::function<int(double, double)>& block, double speed,
+                 double dense, double gravity) {
     const Grid g = Grid::plane_xz(32, 32, 0.0, 0.0, 0.04, 0.04);
     Frame f;
     f.gravity = gravity;
-    FlowSolver solver(g, m, FlowSettings{}, f);
+    FlowSolver solver(g, m, s, f);
     std::vector<double> Phi(g.cells(), 0.0), ux(g.cells(), 0.0), zero(g.cells(), 0.0);
     for (int k = 0; k < 32; ++k)
         for (int i = 0; i < 32; ++i) {
@@ -89,17 +99,14 @@ FlowSolver boxes(const Material& m, const std::function<int(double, double)>& bl
     return solver;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    const Material m = verify::flow_program(argc, argv).material;
-    const FlowSettings s;
+/// Every case of this program in one time-stepping mode (settings s).
+void check_mode(CheckTable& table, const Material& m, const FlowSettings& s) {
+    const std::string tag = verify::mode_tag(s.time_stepping);
+    const bool semi = s.time_stepping == TimeStepping::semi_implicit;
     const double rcp = m.packing.Phi_rcp(s.phi_hat);
-    CheckTable table("Sect. 2.1 flow: stress cases (sharp interfaces, T = 0, Phi -> Phi_rcp, sudden rotation)");
-
     // 1. Dam break: a block at Phi_rcp - 0.01 (p ~ 3 m^2/s^2) in the lower left quarter-box.
-    FlowSolver dam = boxes(m, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0, rcp - 0.01, 9.81);
-    check_clean(table, "dam break, 0.3 s", run(dam, 0.3), s.T_floor);
+    FlowSolver dam = boxes(m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0, rcp - 0.01, 9.81);
+    check_clean(table, tag + "dam break, 0.3 s", run(dam, 0.3), s.T_floor);
 
     // 2. and 3. Two blocks at Phi_co + 0.005 colliding in mid-air (no gravity, no wall contact:
     // a bed at T_floor resting on the no-slip floor would be stopped by it at once).
@@ -107,21 +114,21 @@ int main(int argc, char** argv) {
     auto blocks = [](double x, double z) {
         return z > 0.01 && z < 0.03 ? (x > 0.004 && x < 0.016 ? 1 : x > 0.024 && x < 0.036 ? -1 : 0) : 0;
     };
-    FlowSolver slow = boxes(m, blocks, 0.5, loose, 0.0);
+    FlowSolver slow = boxes(m, s, blocks, 0.5, loose, 0.0);
     const Outcome o = run(slow, 0.1);
-    check_clean(table, "collision at 0.5 m/s, 0.1 s", o, s.T_floor);
-    table.at_most("collision at 0.5 m/s: max Phi - Phi_rcp (stays below)", o.Phi_max - rcp, 0.0);
-    table.at_least("collision at 0.5 m/s: max Phi - Phi_co (compacted by the collision)", o.Phi_max - loose, 0.0);
-    table.note("collision at 0.5 m/s: max Phi = " + verify::format(o.Phi_max) + " (Phi_rcp = " + verify::format(rcp) +
+    check_clean(table, tag + "collision at 0.5 m/s, 0.1 s", o, s.T_floor, !semi);
+    table.at_most(tag + "collision at 0.5 m/s: max Phi - Phi_rcp (stays below)", o.Phi_max - rcp, 0.0);
+    table.at_least(tag + "collision at 0.5 m/s: max Phi - Phi_co (compacted by the collision)", o.Phi_max - loose, 0.0);
+    table.note(tag + "collision at 0.5 m/s: max Phi = " + verify::format(o.Phi_max) + " (Phi_rcp = " + verify::format(rcp) +
                "), smallest dt = " + verify::format(o.dt_min) + " s");
-    FlowSolver fast = boxes(m, blocks, 30.0, loose, 0.0);
+    FlowSolver fast = boxes(m, s, blocks, 30.0, loose, 0.0);
     const Outcome v = run(fast, 0.01);
     const bool named = v.error.find("Phi_rcp") != std::string::npos || v.error.find("dt_min") != std::string::npos;
     const bool one_line = v.error.find('\n') == std::string::npos;
-    table.count("collision at 30 m/s: completed, or stopped naming the limit", v.error.empty() || (named && one_line) ? 1 : 0, 1);
-    table.note("collision at 30 m/s: " + (v.error.empty() ? std::string("completed, max Phi = ") + verify::format(v.Phi_max) : v.error));
-    table.count("collision at 30 m/s: non-finite values before it stopped", v.finite ? 0 : 1, 0);
-    table.at_least("collision at 30 m/s: min Phi before it stopped", v.Phi_min, 0.0);
+    table.count(tag + "collision at 30 m/s: completed, or stopped naming the limit", v.error.empty() || (named && one_line) ? 1 : 0, 1);
+    table.note(tag + "collision at 30 m/s: " + (v.error.empty() ? std::string("completed, max Phi = ") + verify::format(v.Phi_max) : v.error));
+    table.count(tag + "collision at 30 m/s: non-finite values before it stopped", v.finite ? 0 : 1, 0);
+    table.at_least(tag + "collision at 30 m/s: min Phi before it stopped", v.Phi_min, 0.0);
 
     // 4. Sudden rotation at 1 rps with cold dust above the bed.
     const Grid g = drum_grid(32, 0.05);
@@ -134,6 +141,41 @@ int main(int argc, char** argv) {
             if (g.center(2, k) > 0.035 && g.is_inside(g.index(i, 0, k))) Phi[g.index(i, 0, k)] = 0.01;
     const std::vector<double> zero(g.cells(), 0.0);
     drum.set_state(Phi, {zero, zero, zero}, zero);
-    check_clean(table, "sudden start at 1 rps with cold dust, 1 s", run(drum, 1.0), s.T_floor);
+    check_clean(table, tag + "sudden start at 1 rps with cold dust, 1 s", run(drum, 1.0), s.T_floor, !semi);
+}
+
+}  // namespace
+
+/// The semi-implicit step at the largest dt its bound allows (cfl = 1 on the material speed, dt_max
+/// out of the way) and above it (cfl = 2), on the dam break: what happens there.
+void at_the_bound(CheckTable& table, const Material& m) {
+    for (const double cfl : {1.0, 2.0}) {
+        FlowSettings s;
+        s.time_stepping = TimeStepping::semi_implicit;
+        s.cfl = cfl;
+        s.dt_max = 0.01;
+        FlowSolver dam = boxes(m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0,
+                               m.packing.Phi_rcp(s.phi_hat) - 0.01, 9.81);
+        const Outcome o = run(dam, 0.3);
+        const std::string tag = verify::mode_tag(s.time_stepping) + "dam break at cfl = " + verify::format(cfl) +
+                                (cfl > 1.0 ? " (above the bound)" : " (the bound)") + ", 0.3 s";
+        check_clean(table, tag, o, s.T_floor);
+        table.at_most(tag + ": max Phi - Phi_rcp (stays below)", o.Phi_max - m.packing.Phi_rcp(s.phi_hat), 0.0);
+        table.note(tag + ": " + std::to_string(o.steps) + " steps, " + std::to_string(dam.counters().repeated) +
+                   " repeated with half the dt (outflow or compaction bound broken), smallest dt " + verify::format(o.dt_min) +
+                   " s, " + verify::format(static_cast<double>(dam.counters().newton) / dam.counters().pressure_solves) +
+                   " Newton steps per solve");
+    }
+}
+
+int main(int argc, char** argv) {
+    const Material m = verify::flow_program(argc, argv).material;
+    CheckTable table("Sect. 2.1 flow: stress cases (sharp interfaces, T = 0, Phi -> Phi_rcp, sudden rotation)");
+    for (const TimeStepping mode : verify::kFlowModes) {
+        FlowSettings s;
+        s.time_stepping = mode;
+        check_mode(table, m, s);
+    }
+    at_the_bound(table, m);
     return table.finish();
 }

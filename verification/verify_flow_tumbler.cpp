@@ -12,6 +12,8 @@
 //   - the dynamic angle of repose (mean surface angle over 10..25 s) is not below the model's
 //     friction angle atan(mu) = atan(sqrt(2 eta0 eps0/3)) less the coarse grid's error of the
 //     critical angle (verify_flow_incline: 0.7 degrees at 16 cells per layer depth; 1 degree here).
+// Runs in the explicit mode only: in the semi-implicit mode the drum does not roll (a known defect
+// of that experimental mode, docs/flow_solver.md Sect. 5), which the table reports as a note.
 // Writes DIR/flow_tumbler/{fields_lab,fields_drum,history,summary}.dat for figures/fig_flow_tumbler.gp.
 //
 // Run: build/verification/verify_flow_tumbler [--data DIR]   (10-20 s)
@@ -40,20 +42,6 @@ constexpr double kFirstAvalanche = 3.0;   // s, the first avalanche is over (at 
 constexpr double kCoreDepth = 0.05;       // m below the free surface
 constexpr double kCoreShare = 0.1;        // of the top centimetre's speed
 
-/// Rows of a data file (comment lines skipped).
-std::vector<std::vector<double>> rows(const std::string& path) {
-    std::ifstream in(path);
-    std::vector<std::vector<double>> out;
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream s(line);
-        std::vector<double> v;
-        for (double x; s >> x;) v.push_back(x);
-        out.push_back(v);
-    }
-    return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -68,7 +56,7 @@ int main(int argc, char** argv) {
     }
     run_scene_file(path, dir);
 
-    const auto history = rows(dir + "/history.dat");  // t steps angle points flowing max_speed ke mass mass_change dt
+    const auto history = verify::read_rows(dir + "/history.dat");  // t steps angle points flowing max_speed ke mass mass_change dt
     double mass_change = 0.0;
     for (const auto& r : history) mass_change = std::max(mass_change, std::fabs(r[8]));
     const double steps = history.back()[1];
@@ -85,7 +73,7 @@ int main(int argc, char** argv) {
     // |u_lab - Omega x r|. Depth is measured from the bed's highest point along the normal of the
     // surface line at its last fitted angle.
     const double angle = history.back()[2] * M_PI / 180.0, nx = -std::sin(angle), nz = std::cos(angle);
-    const auto fields = rows(dir + "/fields_lab.dat");
+    const auto fields = verify::read_rows(dir + "/fields_lab.dat");
     double top = -INFINITY;
     for (const auto& r : fields)
         if (r[8] > 0.5 && r[2] > 0.3) top = std::max(top, r[0] * nx + r[1] * nz);
@@ -101,10 +89,12 @@ int main(int argc, char** argv) {
                verify::format(core) + " m/s (wall speed " + verify::format(kOmega * kRadius) + " m/s)");
     table.at_most("localised flow: max speed 5 cm deep / top centimetre", core / surface, kCoreShare);
 
-    const auto summary = rows(dir + "/summary.dat");  // t_end steps angle_mean angle_std samples mass_change
+    const auto summary = verify::read_rows(dir + "/summary.dat");  // t_end steps angle_mean angle_std samples mass_change
     const double friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
     table.note("dynamic angle of repose " + verify::format(summary[0][2]) + " +- " + verify::format(summary[0][3]) +
                " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " + verify::format(friction) + " deg");
     table.at_least("dynamic angle of repose - friction angle (deg)", summary[0][2] - friction, -kAngleMargin);
+    table.note(verify::mode_tag(TimeStepping::semi_implicit) + verify::kKnownDefect +
+               "not run: the drum does not roll in this mode (it turns with the drum past 90 deg before it avalanches)");
     return table.finish();
 }

@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "closures/material.hpp"
+#include "flow/flow_settings.hpp"
 #include "scenes/scene_kind.hpp"
 #include "segregation/column.hpp"
 #include "segregation/scheme.hpp"
@@ -27,6 +28,7 @@ int run_main(const std::vector<std::string>& args) {
     usage += "  [segregation] interface (schemes with interface values):\n" + describe_choices(kInterfaceRules);
     usage += "  [bulk] scheme:\n" + describe_choices(kBulkSchemes);
     usage += "  [material] g_law:\n" + describe_choices(kCompressibilityLaws);
+    usage += "  [flow] time_stepping:\n" + describe_choices(kTimeSteppings);
     po::variables_map vm;
     if (!parse_options("run", usage, args, desc, positional, vm)) return 0;
     for (const auto& file : run_scene_file(scene, output_dir)) std::cout << "wrote " << file << '\n';

@@ -35,6 +35,26 @@ std::vector<unsigned char> classify_faces(const Grid& grid, int a) {
             }
     return kind;
 }
+/// The faces of `axis` that are interior or walls, with their cells (MeshFace).
+std::vector<MeshFace> face_list(const Grid& grid, int a, const std::vector<unsigned char>& kind) {
+    std::vector<MeshFace> list;
+    if (grid.n[a] <= 1) return list;
+    std::array<int, 3> m = grid.n;
+    m[a] += 1;
+    for (int k = 0; k < m[2]; ++k)
+        for (int j = 0; j < m[1]; ++j)
+            for (int i = 0; i < m[0]; ++i) {
+                const std::size_t f = grid.face_index(a, i, j, k);
+                if (kind[f] == kNoFace) continue;
+                std::array<int, 3> lo{i, j, k}, hi{i, j, k};
+                lo[a] = (hi[a] + grid.n[a] - 1) % grid.n[a];  // periodic wrap; a wall below has no lower cell
+                hi[a] = hi[a] % grid.n[a];
+                const std::size_t c_lo = grid.index(lo[0], lo[1], lo[2]), c_hi = grid.index(hi[0], hi[1], hi[2]);
+                const FaceKind fk = static_cast<FaceKind>(kind[f]);
+                list.push_back({f, fk == kWallBelow ? c_hi : c_lo, fk == kWallAbove ? c_lo : c_hi, fk, grid.periodic[a] && (a == 0 ? i : a == 1 ? j : k) == grid.n[a]});
+            }
+    return list;
+}
 }  // namespace
 
 FlowMesh::FlowMesh(Grid g) : grid(std::move(g)) {
@@ -65,7 +85,10 @@ FlowMesh::FlowMesh(Grid g) : grid(std::move(g)) {
         row_lo[r] = std::min(lo, hi);
         row_hi[r] = hi;
     }
-    for (int a = 0; a < 3; ++a) face_kind[a] = classify_faces(grid, a);
+    for (int a = 0; a < 3; ++a) {
+        face_kind[a] = classify_faces(grid, a);
+        faces[a] = face_list(grid, a, face_kind[a]);
+    }
 }
 
 AxisRow FlowMesh::axis_row(int a, std::size_t r) const {

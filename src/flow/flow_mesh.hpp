@@ -31,6 +31,14 @@ struct AxisRow {
     long hi_at(int i) const { return i == last ? last_hi : hi; }
 };
 
+/// A face of one axis with the cells on its two sides, lo below and hi above (on a wall both
+/// name the inside cell, as the hydrostatic reconstruction and the mirror state expect).
+struct MeshFace {
+    std::size_t f, lo, hi;
+    FaceKind kind;
+    bool repeat;  // the last layer of a periodic axis: the same face as the first layer
+};
+
 struct FlowMesh {
     explicit FlowMesh(Grid grid);
 
@@ -43,6 +51,7 @@ struct FlowMesh {
     std::vector<std::size_t> inside_cells;          // their indices, in index order
     std::array<std::vector<unsigned char>, 3> face_kind;  // per axis and face: FaceKind
     std::array<std::vector<double>, 3> position;    // cell centres
+    std::array<std::vector<MeshFace>, 3> faces;     // per axis: every interior and wall face
 
     /// The neighbours and faces of the cells of row r along `axis`.
     AxisRow axis_row(int axis, std::size_t row) const;
@@ -71,6 +80,16 @@ struct FlowMesh {
             for (int i = row_lo[r]; i < row_hi[r]; ++i)
                 if (inside[nx * r + i]) body(nx * r + i, i, ar);
         }
+    }
+
+    /// Calls body(face) for every interior and wall face of `axis` (a MeshFace), the list shared
+    /// among threads.
+    template <class Body>
+    void for_each_face(int axis, Body&& body) const {
+        const std::vector<MeshFace>& list = faces[axis];
+        const long n = static_cast<long>(list.size());
+#pragma omp parallel for schedule(static) if (parallel)
+        for (long q = 0; q < n; ++q) body(list[q]);
     }
 
     /// Calls body(c) for every inside cell, the list shared among threads.

@@ -2,6 +2,7 @@
 // (docs/flow_solver.md Sect. 6; every default is justified in docs/assumptions.md F1-F8).
 #pragma once
 
+#include "core/choice.hpp"
 #include "flow/frame.hpp"
 
 #include <array>
@@ -9,9 +10,19 @@
 
 namespace granseg {
 
+/// How a step treats the acoustic waves (docs/flow_solver.md Sect. 2).
+enum class TimeStepping { explicit_waves, semi_implicit };
+inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
+    {TimeStepping::explicit_waves, "explicit",
+     "HLLC fluxes, dt bounded by the sound speed (cfl on |u_n| + c)"},
+    {TimeStepping::semi_implicit, "semi-implicit",
+     "pressure implicit (one Newton-Krylov solve per step), dt bounded by the material speed (cfl on |u_n|)"},
+};
+
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
-    double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (first-order unsplit stability)
+    TimeStepping time_stepping = TimeStepping::explicit_waves;
+    double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
     double Phi_vacuum = 1e-12;  // cells with Phi <= this are empty: u = 0, T = T_floor
     double dt_min = 1e-9;       // s; a smaller step stops the run with InvariantError

@@ -34,6 +34,8 @@
 #include "flow/flow_settings.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/frame.hpp"
+#include "flow/pressure_solver.hpp"
+#include "flow/semi_implicit.hpp"
 
 #include <array>
 #include <limits>
@@ -41,9 +43,16 @@
 
 namespace granseg {
 
-/// Wall-clock seconds spent in the phases of step() (for benchmarks).
+/// Wall-clock seconds spent in the phases of step() (for benchmarks); `pressure` is the part of
+/// `convection` spent in the pressure solves of the semi-implicit step.
 struct FlowTimers {
-    double closures = 0, convection = 0, viscosity = 0, temperature = 0;
+    double closures = 0, convection = 0, viscosity = 0, temperature = 0, pressure = 0;
+};
+
+/// The work of the semi-implicit step (for benchmarks): pressure solves, their Newton steps and
+/// conjugate-gradient iterations, and step attempts repeated with half the dt.
+struct FlowCounters {
+    long pressure_solves = 0, newton = 0, krylov = 0, repeated = 0;
 };
 
 class FlowSolver {
@@ -90,12 +99,18 @@ public:
     /// Phi_rcp and Phi_co of a cell (from the phi_hat field, or settings.phi_hat).
     std::array<double, 2> packing(std::size_t cell) const;
     const FlowTimers& timers() const { return timers_; }
+    const FlowCounters& counters() const { return counters_; }
 
 private:
     /// Primitives, closures and the cell potential at t_.
     void update_closures();
-    /// The explicit (HLLC) convection of a step: face fluxes, effective pressure, dt, update.
-    double convect(double t_end);
+    /// The explicit step up to the temperature: HLLC face fluxes, effective pressure, dt, update,
+    /// implicit viscosity. Returns dt.
+    double explicit_step(double t_end);
+    /// The semi-implicit step up to the temperature (flow/semi_implicit.hpp): dt, predictor with
+    /// the pressure at t^n, implicit viscosity, pressure solve, transport; repeated with half the
+    /// dt while the step would break a bound. Returns dt.
+    double semi_implicit_step(double t_end);
     void check_invariants() const;
 
     FlowMesh mesh_;
@@ -114,11 +129,16 @@ private:
     Potential potential_;
     std::array<AxisLoads, 3> loads_;
     FlowFaces faces_;
+    PressureFaces pressure_;
+    PressureSolver pressure_solver_;
+    std::vector<double> dp_, change_;  // pressure increments of the last step, explicit mass change
+    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
     std::vector<double> work_, heat_;  // one value per cell, work space of the kernels
     FlowTimers timers_;
+    FlowCounters counters_;
 };
 
 }  // namespace granseg

@@ -42,7 +42,39 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
     return {rate, outflow_rate, compaction_rate};
 }
 
-double explicit_time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
+StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
+                              const FlowFaces& faces, bool first) {
+    const std::size_t nx = mesh.grid.n[0];
+    const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
+    const double* Phi = state.Phi.data();
+    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
+    const double* S[3] = {faces[0].speed.data(), faces[1].speed.data(), faces[2].speed.data()};
+    const double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
+    double inv_h[3];
+    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
+    double rate = 0.0, outflow_rate = 0.0;
+#pragma omp parallel for reduction(max : rate, outflow_rate) schedule(static) if (mesh.parallel)
+    for (std::size_t r = 0; r < mesh.rows; ++r) {
+        AxisRow ar[3];
+        for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
+        for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
+            const std::size_t c = nx * r + i;
+            if (!mesh.inside[c]) continue;
+            double cfl = 0.0, out = 0.0;
+            for (int a = 0; a < 3; ++a) {
+                if (inv_h[a] == 0.0) continue;
+                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
+                cfl += (std::max({std::fabs(u[a][c]), S[a][fl], S[a][fu]}) + sound * cs[c]) * inv_h[a];
+                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
+            }
+            rate = std::max(rate, cfl);
+            if (out > 0.0) outflow_rate = std::max(outflow_rate, Phi[c] > 0.0 ? 2.0 * out / Phi[c] : INFINITY);
+        }
+    }
+    return {rate, outflow_rate, 0.0};
+}
+
+double time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
                           const StepRates& rates, const FlowState& state, const CellClosures& cl) {
     double dt = std::min(settings.dt_max, t_end - t);
     const double dt_cfl = rates.waves > 0.0 ? settings.cfl / rates.waves : INFINITY;
@@ -62,6 +94,34 @@ double explicit_time_step(const FlowMesh& mesh, const FlowSettings& settings, do
                              " (largest sound speed c = " + format_number(c_max) + " m/s at Phi = " + format_number(Phi_at, 8) + ")");
     }
     return dt;
+}
+
+bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before,
+                        const CellClosures& cl, const FlowFaces& faces) {
+    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
+    double inv_h[3];
+    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
+    long bad = 0;
+#pragma omp parallel for reduction(+ : bad) schedule(static) if (mesh.parallel)
+    for (std::size_t r = 0; r < mesh.rows; ++r) {
+        AxisRow ar[3];
+        for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
+        for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
+            const std::size_t c = mesh.grid.n[0] * r + i;
+            if (!mesh.inside[c]) continue;
+            double out = 0.0, div = 0.0;
+            for (int a = 0; a < 3; ++a) {
+                if (inv_h[a] == 0.0) continue;
+                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
+                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
+                div += (M[a][fu] - M[a][fl]) * inv_h[a];
+            }
+            const bool ok = dt * out <= kOutflowFraction * Phi_before[c] &&
+                            -dt * div <= kCompactionFraction * (cl.Phi_rcp[c] - Phi_before[c]);
+            bad += ok ? 0 : 1;
+        }
+    }
+    return bad == 0;
 }
 
 }  // namespace granseg

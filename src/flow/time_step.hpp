@@ -1,9 +1,15 @@
-// The time step of the explicit scheme (docs/flow_solver.md Sect. 3): the smallest of
-//   cfl / max_cells sum_axis max(|u_n| + c over the cell's two faces)/h_axis   (CFL, first-order unsplit),
+// The time step (docs/flow_solver.md Sects. 3, 5): the smallest of
+//   cfl / max_cells sum_axis max(wave speed over the cell's two faces)/h_axis   (CFL, first-order unsplit),
 //   kOutflowFraction * Phi / (outflow rate)   (Phi stays > 0, T and u_t stay convex combinations),
 //   kCompactionFraction * (Phi_rcp - Phi) / (net inflow rate)   (Phi stays < Phi_rcp, F4),
-//   dt_max and the time left to t_end,
-// all from the face fluxes of the step, which do not depend on dt.
+//   dt_max and the time left to t_end.
+// Explicit step: the waves are |u_n| + c, and all three rates come from the face fluxes of the step,
+// which do not depend on dt. Semi-implicit step: the waves are the material speeds |u_n| of the
+// cells and |U| of the last step's faces (and |u_n| + c in the first step, after which dt grows by
+// at most kStepGrowth per step), the outflow rate is the last step's (halved margin),
+// and the outflow and compaction bounds are checked after the pressure solve, since the fluxes of
+// the step depend on dt (step_within_bounds(); the step is repeated with half the dt if a bound
+// is broken).
 #pragma once
 
 #include "flow/flow_mesh.hpp"
@@ -28,10 +34,27 @@ struct StepRates {
 StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
                               const FlowFaces& faces);
 
+/// The rates of the semi-implicit step: material speeds |u_n| of the cells and |U| (faces.speed)
+/// of the last step's faces, and twice the outflow rate of the last step's mass fluxes. The first
+/// step also counts the sound speed, as the explicit step does: it starts from a state that need
+/// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step).
+StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
+                              const FlowFaces& faces, bool first);
+
+/// Largest ratio of a semi-implicit step to the one before it.
+constexpr double kStepGrowth = 2.0;
+
 /// dt from the rates (cfl on the wave rate, kOutflowFraction and kCompactionFraction on the
 /// others), dt_max and t_end - t. Throws InvariantError naming the bound that set it if dt falls
 /// below dt_min before t_end.
-double explicit_time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
+double time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
                           const StepRates& rates, const FlowState& state, const CellClosures& closures);
+
+/// Whether the fluxes of a step of length dt keep every cell within the bounds of the explicit
+/// step: outflow at most kOutflowFraction of Phi_before, net inflow at most kCompactionFraction of
+/// the gap Phi_rcp - Phi_before (the implicit pressure alone would let one step close almost all
+/// of it, and the next start from a pressure near the divergence).
+bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before,
+                        const CellClosures& closures, const FlowFaces& faces);
 
 }  // namespace granseg

@@ -14,6 +14,9 @@ namespace granseg {
 FlowSettings read_flow_settings(const SceneFile& scene) {
     const std::string s = "flow";
     FlowSettings f;
+    f.time_stepping = parse_choice(kTimeSteppings, scene.choice(s, "time_stepping", choice_names(kTimeSteppings),
+                                                                choice_name(kTimeSteppings, f.time_stepping)),
+                                   "time_stepping");
     f.cfl = scene.number(s, "cfl", Range::left_open(0, 1), f.cfl);
     f.T_floor = scene.number(s, "T_floor", Range::open(0, 1e-2), f.T_floor);
     f.Phi_vacuum = scene.number(s, "Phi_vacuum", Range::open(0, 1e-3), f.Phi_vacuum);

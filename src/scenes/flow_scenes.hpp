@@ -11,7 +11,7 @@
 
 namespace granseg {
 
-/// Reads the optional [flow] section: cfl, T_floor, Phi_vacuum, dt_min, dt_max, phi_hat.
+/// Reads the optional [flow] section: time_stepping, cfl, T_floor, Phi_vacuum, dt_min, dt_max, phi_hat.
 FlowSettings read_flow_settings(const SceneFile& scene);
 
 std::unique_ptr<SceneJob> prepare_bed_at_rest(const SceneFile& scene);

@@ -1,12 +1,15 @@
-// Benchmark of the flow solver on the tumbler-flow drum (Sect. 4.2 set-up): for 50, 100 and 200
-// cells per diameter and 1 and 2 OpenMP threads, the cost of a window of steps from the initial
-// state (the time step is set by the sound speed of the static bed, which the window already has):
-// cell updates per second (inside cells times steps per second), the time step, the steps a
-// 25 s run needs at that step, and the shares of closures, convection (fluxes, update, time step),
-// implicit viscosity and temperature. Medians of kRuns runs; reports, never asserts.
+// Benchmark of the flow solver on the tumbler-flow drum (Sect. 4.2 set-up), both time-stepping
+// modes: for 50, 100 and 200 cells per diameter and 1 and 2 OpenMP threads, a window of steps from
+// the initial state (a bed at rest in the turning drum, before the first avalanche): the time
+// step, steps and wall time per second of drum time, ns per cell and step, the shares of the
+// phases, and for the semi-implicit mode the Newton steps per pressure solve and the
+// conjugate-gradient iterations per Newton step; and the ratio of the modes' wall time per drum
+// second. Medians of kRuns runs; reports, never asserts. The explicit step is set by the sound
+// speed of the resting bed, which the window already has; the semi-implicit step reaches dt_max
+// after its start-up (docs/flow_solver.md Sect. 9).
 // Writes bench_flow.dat for figures/bench_flow.gp.
 //
-// Run: build/bench/bench_flow [--data DIR]   (about a minute; timings are noisy on a shared machine)
+// Run: build/bench/bench_flow [--data DIR]   (a few minutes; timings are noisy on a shared machine)
 #include "closures/closures.hpp"
 #include "flow/bed.hpp"
 #include "flow/flow_solver.hpp"
@@ -25,17 +28,19 @@ namespace {
 
 constexpr int kRuns = 5;
 constexpr double kRadius = 0.05, kFillHeight = 0.075, kRunLength = 25.0;
+constexpr int kWarmUp = 20;  // steps before the window: caches, the semi-implicit start-up of dt
 
 struct Sample {
-    double seconds, dt, closures, convection, viscosity, temperature;
+    double seconds, drum_seconds, share[5], newton, krylov;
     std::size_t cells;
     long steps;
 };
 
-Sample window(int n, int steps) {
+Sample window(TimeStepping mode, int n, int steps) {
     const Material m = Material::glass_substitute();
     const Grid g = drum_grid(n, kRadius);
     FlowSettings s;
+    s.time_stepping = mode;
     Frame f;
     f.omega = 2.0 * M_PI * 0.1;
     FlowSolver solver(g, m, s, f);
@@ -43,18 +48,28 @@ Sample window(int n, int steps) {
                                                     m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat));
     const std::vector<double> zero(g.cells(), 0.0), T(g.cells(), s.T_floor);
     solver.set_state(Phi, {zero, zero, zero}, T);
-    for (int i = 0; i < 5; ++i) solver.step();  // warm-up: caches, page faults, thread pool
+    for (int i = 0; i < kWarmUp; ++i) solver.step();
     const FlowTimers before = solver.timers();
-    const auto t0 = std::chrono::steady_clock::now();
+    const FlowCounters counted = solver.counters();
+    const double t0 = solver.time();
+    const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps; ++i) solver.step();
-    Sample r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    Sample r{};
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.drum_seconds = solver.time() - t0;
     const FlowTimers& after = solver.timers();
-    r.closures = after.closures - before.closures, r.convection = after.convection - before.convection;
-    r.viscosity = after.viscosity - before.viscosity, r.temperature = after.temperature - before.temperature;
-    r.dt = solver.last_dt();
+    const double parts[5] = {after.closures - before.closures, after.convection - before.convection - (after.pressure - before.pressure),
+                             after.pressure - before.pressure, after.viscosity - before.viscosity,
+                             after.temperature - before.temperature};
+    double total = 0.0;
+    for (double p : parts) total += p;
+    for (int k = 0; k < 5; ++k) r.share[k] = parts[k] / total;
+    const FlowCounters& c = solver.counters();
+    const double solves = static_cast<double>(c.pressure_solves - counted.pressure_solves);
+    r.newton = solves > 0 ? (c.newton - counted.newton) / solves : 0.0;
+    r.krylov = c.newton > counted.newton ? static_cast<double>(c.krylov - counted.krylov) / (c.newton - counted.newton) : 0.0;
     r.cells = 0;
-    for (std::size_t c = 0; c < g.cells(); ++c) r.cells += g.is_inside(c) ? 1 : 0;
+    for (std::size_t q = 0; q < g.cells(); ++q) r.cells += g.is_inside(q) ? 1 : 0;
     r.steps = steps;
     return r;
 }
@@ -68,32 +83,42 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    DataTable table({"cells_per_diameter", "threads", "inside_cells", "Mcell_updates_per_s", "dt", "steps_for_25s",
-                     "seconds_for_25s", "share_closures", "share_convection", "share_viscosity", "share_temperature"});
-    table.comment("tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps) from its initial state; medians of " +
-                  std::to_string(kRuns) + " runs; seconds_for_25s = steps_for_25s / (steps per second)");
-    std::printf("%-6s %-7s %-8s %-12s %-10s %-10s %-11s %-8s %-8s %-8s %-8s\n", "cells", "threads", "inside",
-                "Mcell-upd/s", "dt (s)", "steps 25s", "est. 25s (s)", "closure", "convect", "viscous", "temper");
+    DataTable table({"semi_implicit", "cells_per_diameter", "threads", "inside_cells", "ns_per_cell_step", "dt",
+                     "steps_per_drum_second", "wall_per_drum_second", "seconds_for_25s", "newton_per_solve",
+                     "krylov_per_newton", "share_closures", "share_convection", "share_pressure", "share_viscosity",
+                     "share_temperature", "ratio_explicit_to_semi"});
+    table.comment("tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps) from its initial state (bed at rest, before the first "
+                  "avalanche); medians of " + std::to_string(kRuns) + " windows; ratio: explicit wall per drum second over "
+                  "this row's (semi-implicit rows)");
+    std::printf("%-14s %-6s %-7s %-8s %-9s %-9s %-10s %-10s %-9s %-7s %-7s %-6s\n", "mode", "cells", "threads", "inside",
+                "ns/cell", "dt (s)", "steps/s", "wall/s", "25 s (s)", "newton", "krylov", "ratio");
     for (int n : {50, 100, 200}) {
-        const int steps = n == 200 ? 100 : 400;
+        const int steps = n == 200 ? 100 : 300;
         for (int threads : {1, 2}) {
             omp_set_num_threads(threads);
-            std::vector<double> rate, share[4];
-            Sample last{};
-            for (int run = 0; run < kRuns; ++run) {
-                last = window(n, steps);
-                rate.push_back(last.cells * static_cast<double>(last.steps) / last.seconds / 1e6);
-                const double total = last.closures + last.convection + last.viscosity + last.temperature;
-                share[0].push_back(last.closures / total), share[1].push_back(last.convection / total);
-                share[2].push_back(last.viscosity / total), share[3].push_back(last.temperature / total);
+            double explicit_wall = 0.0;
+            for (const TimeStepping mode : {TimeStepping::explicit_waves, TimeStepping::semi_implicit}) {
+                std::vector<double> ns, dt, share[5], newton, krylov;
+                Sample last{};
+                for (int run = 0; run < kRuns; ++run) {
+                    last = window(mode, n, steps);
+                    ns.push_back(1e9 * last.seconds / (static_cast<double>(last.cells) * last.steps));
+                    dt.push_back(last.drum_seconds / last.steps);
+                    for (int k = 0; k < 5; ++k) share[k].push_back(last.share[k]);
+                    newton.push_back(last.newton), krylov.push_back(last.krylov);
+                }
+                const double step = median(dt), cost = median(ns) * 1e-9 * last.cells;  // s per step
+                const double wall = cost / step, semi = mode == TimeStepping::semi_implicit;
+                if (!semi) explicit_wall = wall;
+                const double ratio = semi ? explicit_wall / wall : 1.0;
+                table.row({semi, static_cast<double>(n), static_cast<double>(threads), static_cast<double>(last.cells),
+                           median(ns), step, 1.0 / step, wall, kRunLength * wall, median(newton), median(krylov),
+                           median(share[0]), median(share[1]), median(share[2]), median(share[3]), median(share[4]), ratio});
+                std::printf("%-14s %-6d %-7d %-8zu %-9.0f %-9.3g %-10.4g %-10.3g %-9.3g %-7.2f %-7.1f %-6.2f\n",
+                            choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, median(ns), step, 1.0 / step,
+                            wall, kRunLength * wall, median(newton), median(krylov), ratio);
+                std::fflush(stdout);
             }
-            const double r = median(rate), steps25 = kRunLength / last.dt;
-            const double seconds25 = steps25 * last.cells / (r * 1e6);
-            table.row({static_cast<double>(n), static_cast<double>(threads), static_cast<double>(last.cells), r, last.dt,
-                       steps25, seconds25, median(share[0]), median(share[1]), median(share[2]), median(share[3])});
-            std::printf("%-6d %-7d %-8zu %-12.3g %-10.3g %-10.3g %-11.3g %-8.2f %-8.2f %-8.2f %-8.2f\n", n, threads,
-                        last.cells, r, last.dt, steps25, seconds25, median(share[0]), median(share[1]), median(share[2]),
-                        median(share[3]));
         }
     }
     verify::write_data(options, "bench_flow.dat", table);

@@ -92,6 +92,15 @@ FlowProgram flow_program(int argc, char** argv) {
     return {options, Material::glass_substitute()};
 }
 
+std::string mode_tag(TimeStepping mode) { return "[" + choice_name(kTimeSteppings, mode) + "] "; }
+
+std::string mode_suffix(TimeStepping mode) {
+    if (mode == TimeStepping::explicit_waves) return "";
+    std::string name = "_" + choice_name(kTimeSteppings, mode);
+    for (char& ch : name) ch = ch == '-' ? '_' : ch;
+    return name;
+}
+
 double max_momentum(const FlowSolver& s) {
     double worst = 0.0;
     for (std::size_t c = 0; c < s.grid().cells(); ++c)

@@ -4,7 +4,9 @@
 
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace granseg::verify {
 
@@ -48,6 +50,19 @@ ProgramOptions parse_program_options(int argc, char** argv) {
 
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table) {
     write_file_atomically(options.data_dir + "/" + name, table.str());
+}
+
+std::vector<std::vector<double>> read_rows(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::vector<double>> out;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream row(line);
+        std::vector<double> v;
+        for (double x; row >> x;) v.push_back(x);
+        out.push_back(v);
+    }
+    return out;
 }
 
 }  // namespace granseg::verify

@@ -5,6 +5,7 @@
 #include "core/output.hpp"
 
 #include <string>
+#include <vector>
 
 namespace granseg::verify {
 
@@ -16,6 +17,9 @@ struct ProgramOptions {
 /// InputError or InvariantError that escapes main ends the program with its one-line message
 /// and exit status 2 or 3, as in the CLI.
 ProgramOptions parse_program_options(int argc, char** argv);
+
+/// The rows of a data file a program wrote (comment lines and blank lines skipped).
+std::vector<std::vector<double>> read_rows(const std::string& path);
 
 /// Writes `table` to DIR/name (atomically, see core/output.hpp).
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table);

@@ -1,0 +1,137 @@
+#include "flow/pressure_solver.hpp"
+
+#include "flow/equation_of_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granseg {
+
+namespace {
+/// Relative tolerance of each conjugate-gradient solve at most this large (inexact Newton: the
+/// outer iteration corrects what the inner one leaves)...
+constexpr double kKrylovTolerance = 0.1;
+/// and at most this small (a finer one would only fight round-off).
+constexpr double kKrylovFloor = 1e-12;
+/// Round-off of a volume fraction summed over a few face fluxes.
+constexpr double kRoundOff = 1e-15;
+/// Newton steps before the solve gives up (the caller then shortens the step).
+constexpr int kMaxNewton = 30;
+}  // namespace
+
+PressureSolver::PressureSolver(const FlowMesh& mesh) {
+    const Grid& grid = mesh.grid;
+    unknown_.assign(grid.cells(), -1);
+    long rows = 0;
+    for (std::size_t c : mesh.inside_cells) unknown_[c] = rows++;
+    std::vector<Eigen::Triplet<double>> pattern;
+    for (long r = 0; r < rows; ++r) pattern.emplace_back(r, r, 0.0);
+    for (int a = 0; a < 3; ++a)
+        for (const MeshFace& f : mesh.faces[a])
+            if (f.kind == kInterior && !f.repeat) {
+                pattern.emplace_back(unknown_[f.lo], unknown_[f.hi], 0.0);
+                pattern.emplace_back(unknown_[f.hi], unknown_[f.lo], 0.0);
+            }
+    J_.resize(rows, rows);
+    J_.setFromTriplets(pattern.begin(), pattern.end());
+    J_.makeCompressed();
+    auto position = [&](long row, long col) {
+        for (long k = J_.outerIndexPtr()[row]; k < J_.outerIndexPtr()[row + 1]; ++k)
+            if (J_.innerIndexPtr()[k] == col) return k;
+        return -1L;
+    };
+    diagonal_.resize(rows);
+    for (long r = 0; r < rows; ++r) diagonal_[r] = position(r, r);
+    for (int a = 0; a < 3; ++a) {
+        entry_[a].assign(grid.faces(a), -1);
+        mirror_[a].assign(grid.faces(a), -1);
+        for (const MeshFace& f : mesh.faces[a])
+            if (f.kind == kInterior && !f.repeat) {
+                entry_[a][f.f] = position(unknown_[f.lo], unknown_[f.hi]);
+                mirror_[a][f.f] = position(unknown_[f.hi], unknown_[f.lo]);
+            }
+    }
+    laplacian_ = J_;
+    cg_.setTolerance(kKrylovTolerance);
+    cg_.analyzePattern(J_);  // the fill-reducing ordering of the preconditioner, once
+    x_.setZero(rows);
+}
+
+PressureSolver::PressureSolver(const PressureSolver& other)
+    : unknown_(other.unknown_),
+      entry_(other.entry_),
+      mirror_(other.mirror_),
+      diagonal_(other.diagonal_),
+      J_(other.J_),
+      laplacian_(other.laplacian_),
+      x_(other.x_) {
+    cg_.setTolerance(kKrylovTolerance);
+    cg_.analyzePattern(J_);
+}
+
+PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
+    if (this == &other) return *this;
+    unknown_ = other.unknown_, entry_ = other.entry_, mirror_ = other.mirror_, diagonal_ = other.diagonal_;
+    J_ = other.J_, laplacian_ = other.laplacian_, x_ = other.x_;
+    cg_.analyzePattern(J_);
+    return *this;
+}
+
+PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                                         const CellClosures& cl, const PressureFaces& faces,
+                                         const std::vector<double>& change, double accuracy, std::vector<double>& dp) {
+    const long rows = J_.rows();
+    double* value = laplacian_.valuePtr();
+    // The coupling part: K_f on both diagonals, -K_f off the diagonal.
+    std::fill(value, value + laplacian_.nonZeros(), 0.0);
+    for (int a = 0; a < 3; ++a)
+        for (const MeshFace& f : mesh.faces[a])
+            if (f.kind == kInterior && !f.repeat && faces[a].coupling[f.f] != 0.0) {
+                const double k = faces[a].coupling[f.f];
+                value[entry_[a][f.f]] -= k, value[mirror_[a][f.f]] -= k;
+                value[diagonal_[unknown_[f.lo]]] += k, value[diagonal_[unknown_[f.hi]]] += k;
+            }
+    std::copy(value, value + laplacian_.nonZeros(), J_.valuePtr());
+    Eigen::VectorXd base(rows), target(rows);
+    x_.resize(rows), slope_.resize(rows), F_.resize(rows);
+    for (std::size_t c : mesh.inside_cells) {
+        const long r = unknown_[c];
+        base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]).Phi;
+        target[r] = change[c];
+        x_[r] = dp[c];
+    }
+    PressureSolveStats stats;
+    // Newton stops at `accuracy` times the largest mass change of the explicit fluxes, and at
+    // round-off when they change nothing (a bed at rest stays at rest to round-off).
+    const double tolerance = accuracy * target.lpNorm<Eigen::Infinity>() + kRoundOff;
+    for (;; ++stats.newton) {
+        // F = Phi(p + dp) - Phi(p) - r + K dp, and the slopes dPhi/dp at p + dp.
+        F_ = laplacian_ * x_ - target;
+        for (std::size_t c : mesh.inside_cells) {
+            const long r = unknown_[c];
+            const VolumeAtPressure v = volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]);
+            F_[r] += v.Phi - base[r];
+            slope_[r] = v.slope;
+        }
+        stats.residual = F_.lpNorm<Eigen::Infinity>();
+        // At least one Newton step (a lagged pressure would not damp the acoustic waves), unless
+        // the residual is already at round-off (a bed at rest then stays exactly where it is).
+        if (stats.residual <= tolerance && (stats.newton > 0 || stats.residual <= kRoundOff)) {
+            stats.converged = true;
+            break;
+        }
+        if (stats.newton == kMaxNewton) break;
+        for (long r = 0; r < rows; ++r) J_.valuePtr()[diagonal_[r]] = value[diagonal_[r]] + slope_[r];
+        cg_.factorize(J_);
+        // Each solve only needs to bring the residual well below the Newton tolerance: with the
+        // warm start that is often a small relative reduction.
+        cg_.setTolerance(std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm())));
+        const Eigen::VectorXd step = cg_.solve(-F_);
+        stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
+        x_ += step;
+    }
+    for (std::size_t c : mesh.inside_cells) dp[c] = x_[unknown_[c]];
+    return stats;
+}
+
+}  // namespace granseg

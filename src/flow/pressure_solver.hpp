@@ -1,0 +1,63 @@
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5): find
+// the pressure increments dp per inside cell with
+//     F_c(dp) = Phi(p_c + dp_c; T_c) - Phi_c - r_c + sum_faces K_f (dp_c - dp_nb) = 0,
+// where Phi(p; T) is the inverse equation of state (flow/equation_of_state.hpp), r_c the mass
+// change of the explicit part of the face mass fluxes, and K_f = (dt/h)^2 Phi_donor/Phi_face >= 0
+// the coupling of the two cells of an interior face (the face mass flux changes by
+// -(dt/h) (Phi_donor/Phi_face) (dp_hi - dp_lo), eq. 9 without convection). Phi(p) is concave and
+// increasing and the coupling matrix is a weighted graph Laplacian, so the Newton iterates after
+// the first approach the solution from below (Casulli & Zanolli, SIAM J. Sci. Comput. 32, 2010):
+// Phi stays below Phi_rcp. Each Newton step solves J s = -F, J = diag(dPhi/dp) + K, symmetric
+// positive definite, by conjugate gradients (Eigen, Jacobi preconditioner: it costs less per
+// solve than Eigen's incomplete Cholesky, whose factorisation dominates, measured) only as far as
+// the Newton tolerance needs; the sparsity pattern (inside cells, interior faces) is built once;
+// the first guess is the previous step's dp (warm start).
+#pragma once
+
+#include "closures/material.hpp"
+#include "flow/flow_mesh.hpp"
+#include "flow/flow_state.hpp"
+#include "flow/semi_implicit.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <vector>
+
+namespace granseg {
+
+/// Iteration counts of one pressure solve.
+struct PressureSolveStats {
+    int newton = 0;          // Newton steps
+    int krylov = 0;          // conjugate-gradient iterations, summed over the Newton steps
+    double residual = 0.0;   // max |F_c| at the end
+    bool converged = false;
+};
+
+class PressureSolver {
+public:
+    explicit PressureSolver(const FlowMesh& mesh);
+    /// Copies the pattern and the warm start; the Krylov solver (not copyable) is set up anew.
+    PressureSolver(const PressureSolver& other);
+    PressureSolver& operator=(const PressureSolver& other);
+
+    /// Solves F(dp) = 0 (header comment) for dp (one value per grid cell, the guess on entry; 0
+    /// outside). faces[a].coupling: per face the coupling K_f (0 on walls and faces without
+    /// material); change: r_c per cell. Newton stops when max |F_c| <= accuracy max |r_c| + round-off.
+    PressureSolveStats solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                             const CellClosures& closures, const PressureFaces& faces,
+                             const std::vector<double>& change, double accuracy, std::vector<double>& dp);
+
+private:
+    using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+    std::vector<long> unknown_;                 // grid cell -> row (-1 outside)
+    std::array<std::vector<long>, 3> entry_;    // per axis and face: value index of (lo, hi), or -1
+    std::array<std::vector<long>, 3> mirror_;   // and of (hi, lo)
+    std::vector<long> diagonal_;                // value index of each row's diagonal
+    Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
+    Eigen::VectorXd x_, rhs_, slope_, F_;
+    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg_;
+};
+
+}  // namespace granseg

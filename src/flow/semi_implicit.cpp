@@ -1,0 +1,155 @@
+#include "flow/semi_implicit.hpp"
+
+#include "flow/hllc.hpp"
+#include "flow/transport_flux.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granseg {
+
+namespace {
+/// A face whose mass leaves a cell with less than donor/kDonorExcess gets the smaller donor and
+/// the solve is repeated; below that the outflow bound (flow/time_step.hpp) is the guard.
+constexpr double kDonorExcess = 1.1;
+/// Below this share of Phi_co a donor is dust: it carries its material at its own velocity.
+constexpr double kDust = 1e-3;
+
+/// The state of cell c for the faces of `axis` (normal and tangential velocity components).
+FaceState face_state(const FlowState& s, const CellClosures* cl, int a, std::size_t c) {
+    return {s.Phi[c], s.u[a][c], s.u[(a + 1) % 3][c], s.u[(a + 2) % 3][c], s.T[c], cl ? cl->p[c] : 0.0, cl ? cl->c[c] : 0.0};
+}
+
+/// The mass-weighted mean (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi) (the plain mean without mass).
+double mass_mean(double Phi_lo, double Phi_hi, double x_lo, double x_hi) {
+    const double mass = Phi_lo + Phi_hi;
+    return mass > 0.0 ? (Phi_lo * x_lo + Phi_hi * x_hi) / mass : 0.5 * (x_lo + x_hi);
+}
+
+/// The face pressure that gives each cell the share Phi_cell/(Phi_lo + Phi_hi) of P_lo - P_hi.
+double face_pressure(double Phi_lo, double Phi_hi, double P_lo, double P_hi) {
+    return mass_mean(Phi_hi, Phi_lo, P_lo, P_hi);
+}
+}  // namespace
+
+void pressure_faces(const FlowMesh& mesh, int a, double gravity, const FlowState& state, const CellClosures& cl,
+                    const Potential& potential, const AxisLoads& loads, AxisPressureFaces& pf, AxisFaces& faces) {
+    const double *psi = potential.cell.data(), *psi_face = potential.face[a].data();
+    const double *load = loads.load.data(), *carry = loads.carry.data(), h = mesh.grid.h[a];
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        FaceState L = face_state(state, &cl, a, lo), R = face_state(state, &cl, a, hi);
+        pf.corr_lo[f] = F.kind == kWallBelow ? 0.0 : hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
+        pf.corr_hi[f] = F.kind == kWallAbove ? 0.0 : hydrostatic_reconstruction(R, psi_face[f] - psi[hi], load[hi], carry[hi]);
+        pf.p_lo[f] = L.p, pf.p_hi[f] = R.p;
+        pf.reversed[f] = 0;
+        const bool dilute = L.Phi < 0.5 * cl.Phi_co[lo] && R.Phi < 0.5 * cl.Phi_co[hi];
+        const double D = F.kind == kInterior ? L.p - R.p : 0.0, cap = 2.0 * gravity * h * 0.5 * (L.Phi + R.Phi);
+        pf.force[f] = dilute ? std::max(-cap, std::min(cap, D)) : D;
+        faces.p[f] = std::max(0.0, F.kind == kInterior    ? face_pressure(L.Phi, R.Phi, L.p, R.p)
+                                   : F.kind == kWallAbove ? L.p
+                                                          : R.p);
+    });
+}
+
+void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& state, const CellClosures& cl,
+                     const AxisPressureFaces& pf, AxisFaces& out) {
+    const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
+    const double h = mesh.grid.h[a];
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        double P_lo = pf.p_lo[f], P_hi = pf.p_hi[f];
+        if (F.kind == kInterior) {  // each side's share of the (limited) face force
+            const double Phi_lo = state.Phi[lo], Phi_hi = state.Phi[hi], mass = Phi_lo + Phi_hi;
+            const double s_lo = mass > 0.0 ? Phi_lo / mass : 0.5;
+            P_lo -= s_lo * pf.force[f];
+            P_hi += (1.0 - s_lo) * pf.force[f];
+        } else {  // a wall: the inside cell's p' plus the impedance of its motion towards the wall
+            const bool above = F.kind == kWallAbove;
+            const std::size_t c = above ? lo : hi;
+            const double towards = std::max(0.0, above ? state.u[a][c] : -state.u[a][c]);
+            P_lo = P_hi = (above ? P_lo : P_hi) + state.Phi[c] * cl.c[c] * towards / (1.0 + cl.c[c] * dt / h);
+        }
+        out.mass[f] = out.energy[f] = out.mom[t1][f] = out.mom[t2][f] = 0.0;
+        out.mom[a][f] = P_hi + pf.corr_hi[f];
+        out.mom_below[f] = P_lo + pf.corr_lo[f];
+    });
+}
+
+void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt, const FlowState& state,
+                       const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
+                       AxisPressureFaces& pf, std::vector<double>& change) {
+    const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
+    const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
+    const double* Phi_co = closures.Phi_co.data();
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
+        if (F.kind != kInterior || !(Phi_f > Phi_vac)) {
+            pf.predictor[f] = pf.coupling[f] = pf.donor[f] = 0.0;
+            return;
+        }
+        // The mass-weighted mean; but a donor holding (almost) nothing moves its material at its
+        // own velocity (upwind), so dust left behind by a moving cell is not dragged along (it
+        // would feed that cell's velocity back to it with no friction in between).
+        const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
+        const std::size_t up = mean > 0.0 ? lo : hi;
+        const bool dilute = Phi[up] < kDust * Phi_co[up];
+        const double V = dilute ? u[up] : mean;
+        const double V_A = dilute ? acc[up] : mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
+        const double U = V + dt * pf.force[f] / (h * Phi_f) - V_A;
+        const bool careful = pf.reversed[f] || U == 0.0;
+        const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];
+        pf.predictor[f] = U;
+        pf.donor[f] = donor;
+        pf.coupling[f] = (dt / h) * (dt / h) * donor / Phi_f;
+    });
+    const double rate = dt / h;
+    const double *U = pf.predictor.data(), *donor = pf.donor.data();
+    const unsigned char* in = mesh.inside.data();
+    double* r = change.data();
+    mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+        const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
+        if (in[c]) r[c] -= rate * (donor[fu] * U[fu] - donor[fl] * U[fl]);
+    });
+}
+
+long mark_reversed_faces(const FlowMesh& mesh, int a, const FlowState& state, const AxisFaces& faces,
+                         AxisPressureFaces& pf) {
+    long marked = 0;
+    for (const MeshFace& F : mesh.faces[a]) {
+        const std::size_t f = F.f;
+        if (F.kind != kInterior || pf.reversed[f] || pf.donor[f] == 0.0) continue;
+        const double M = faces.mass[f], source = M > 0.0 ? state.Phi[F.lo] : state.Phi[F.hi];
+        if (M != 0.0 && pf.donor[f] > kDonorExcess * source) pf.reversed[f] = 1, ++marked;
+    }
+    return marked;
+}
+
+void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, double dt, const FlowState& state,
+                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& out) {
+    const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
+    const double h = mesh.grid.h[a];
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        const FaceState L = face_state(state, nullptr, a, lo), R = face_state(state, nullptr, a, hi);
+        double U = 0.0, P_lo = dp[lo], P_hi = dp[hi];  // walls: the inside cell's increment, no force
+        if (F.kind == kInterior && pf.donor[f] > 0.0) {
+            const double Phi_f = 0.5 * (L.Phi + R.Phi), force = dp[lo] - dp[hi];
+            U = pf.predictor[f] + dt * force / (h * Phi_f);
+            // Face pressures as seen by each side: its share of the increment force.
+            const double s_lo = L.Phi / (L.Phi + R.Phi);
+            P_lo = dp[lo] - s_lo * force;
+            P_hi = dp[hi] + (1.0 - s_lo) * force;
+        }
+        const double M = pf.donor[f] * U;
+        const FaceFlux G = transport_flux(L, R, M, U, 0.0);
+        out.mass[f] = G.mass, out.energy[f] = G.energy;
+        out.mom[t1][f] = G.mom_t1, out.mom[t2][f] = G.mom_t2;
+        out.mom[a][f] = G.mom_n + P_hi;
+        out.mom_below[f] = G.mom_n + P_lo;
+        out.speed[f] = std::fabs(U);
+    });
+}
+
+}  // namespace granseg

@@ -1,0 +1,91 @@
+// The faces of the semi-implicit (pressure-implicit) step (docs/flow_solver.md Sect. 5):
+// transport explicit, the acoustic part implicit, so that dt follows the material speed, not
+// the sound speed. One pass of an incremental pressure correction with Rhie-Chow face
+// velocities (Rhie & Chow, AIAA J. 21, 1983; Patankar, "Numerical Heat Transfer and Fluid
+// Flow", 1980, Sect. 6.8) on cells that keep the hydrostatic reconstruction of the explicit
+// scheme.
+//
+// Per face between the cells lo and hi of one axis (cell size h, Phi_f = (Phi_lo + Phi_hi)/2):
+//   reconstructed pressures p'_lo, p'_hi of the two cells at the face (flow/hllc.hpp, with the
+//     loads of flow/loads.hpp) and the face force D = p'_lo - p'_hi: in the discrete lithostatic
+//     balance D = 0 on every face, so a bed at rest stays at rest (well balanced). On a dilute
+//     face (both cells below half their Phi_co) |D| is limited to 2 |g| h Phi_f, the free fall of
+//     its material: loads passed on through dust would otherwise accelerate nearly nothing;
+//   shares: cell lo takes Phi_lo/(Phi_lo + Phi_hi) of a face force, cell hi the rest, so both get
+//     the same velocity change (dust next to a dense cell takes its velocity from the mass that
+//     enters it, not from the dense cell's pressure).
+// 1. Predictor (predictor_faces, then the explicit update and the implicit viscosity of the
+//    explicit scheme): the cells feel their shares of D and their own weight at t^n (no mass
+//    moves), Coriolis, sources, then viscosity, giving u*; A is the part of the change that came
+//    from the forces (before viscosity). A wall pushes back on a cell moving towards it with the
+//    implicit acoustic impedance p' + Phi c u_n/(1 + c dt/h), which never reverses u_n.
+// 2. Face predictor (pressure_coupling):
+//        U* = V* + dt D/(h Phi_f) - V_A,
+//    V*, V_A the normal components of u* and A at the face: the mass-weighted mean
+//    (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi), or the donor's own value when the donor holds
+//    (almost) no material (dust left behind by a moving cell is not dragged along). The face
+//    moves as its cells do after the viscous step, except that the cells' shared forces are
+//    replaced by the face's own compact D (Rhie-Chow: no checkerboard). The donor Phi_d is the
+//    cell U* leaves, or the smaller of the two when U* = 0 or when the pressure reversed the flow
+//    on this face onto a cell that holds clearly less (then the solve is repeated), so that no
+//    cell gives much more than its own Phi times |U| dt/h. The explicit flux M_x = Phi_d U* and
+//    the coupling K = (dt/h)^2 Phi_d/Phi_f define the pressure equation
+//    (flow/pressure_solver.hpp) for the increments dp.
+// 3. Corrected faces (semi_implicit_face_fluxes): U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9
+//    for the increment), M = Phi_d U (the hand-over; 0 on walls); the fluxes of momentum and
+//    Phi T are M times the donor's values (normal momentum: M U, flow/transport_flux.hpp), and
+//    each cell gets its share of the increment force dp_lo - dp_hi.
+#pragma once
+
+#include "flow/flow_mesh.hpp"
+#include "flow/flow_settings.hpp"
+#include "flow/flow_state.hpp"
+
+#include <array>
+#include <vector>
+
+namespace granseg {
+
+/// Per axis and face, what the semi-implicit fluxes are built from.
+struct AxisPressureFaces {
+    std::vector<double> p_lo, p_hi;        // reconstructed pressures p' of the lower and upper cell
+    std::vector<double> corr_lo, corr_hi;  // p - p' of the two cells
+    std::vector<double> force;             // D, limited on dilute faces
+    std::vector<double> predictor;         // U* for the current dt
+    std::vector<double> coupling;          // K
+    std::vector<double> donor;             // Phi_d
+    std::vector<unsigned char> reversed;   // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
+};
+
+using PressureFaces = std::array<AxisPressureFaces, 3>;
+
+/// The reconstructed pressures, corrections and (limited) face forces of every face of `axis` at
+/// t^n (no reversed faces yet), and the face pressure (Phi_hi p'_lo + Phi_lo p'_hi)/(Phi_lo + Phi_hi)
+/// in faces.p (the effective pressure; walls: the inside cell's p').
+void pressure_faces(const FlowMesh& mesh, int axis, double gravity, const FlowState& state, const CellClosures& closures,
+                    const Potential& psi, const AxisLoads& loads, AxisPressureFaces& pf, AxisFaces& faces);
+
+/// Part 1: zero mass, energy and tangential fluxes; normal momentum fluxes that give each side its
+/// share of D with the corrections p - p' (its weight); a wall pushes with the inside cell's p'
+/// plus the implicit acoustic impedance Phi c u_n/(1 + c dt/h) of a cell moving towards it, which
+/// never reverses u_n.
+void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
+                     const AxisPressureFaces& pf, AxisFaces& faces);
+
+/// Part 2 for `axis`: U*, donor and K of every face from the predicted state (u*) and the force
+/// part A of the predictor; adds r_c = -dt sum_faces (M_x[upper] - M_x[lower])/h to `change`.
+void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
+                       const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
+                       AxisPressureFaces& pf, std::vector<double>& change);
+
+/// Marks the faces whose mass flux leaves a cell holding clearly less than the donor it was
+/// computed with (the pressure reversed the flow there); returns how many it marked.
+long mark_reversed_faces(const FlowMesh& mesh, int axis, const FlowState& state, const AxisFaces& faces,
+                         AxisPressureFaces& pf);
+
+/// Part 3 for `axis` after the pressure solve (dp per cell): mass (the hand-over M), energy,
+/// momenta with the corrections of the increments, and the face speed |U| (next step's bound).
+void semi_implicit_face_fluxes(const FlowMesh& mesh, int axis, double dt, const FlowState& state,
+                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& faces);
+
+}  // namespace granseg
