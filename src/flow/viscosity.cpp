@@ -4,16 +4,13 @@ namespace granseg {
 
 void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
                         const std::vector<double>& eta_in, DiffusionLines& lines, std::vector<double>& work,
-                        FlowState& state, const std::vector<double>* normal_eta) {
+                        FlowState& state) {
     const double Phi_vac = settings.Phi_vacuum;
     for (int a = 0; a < 3; ++a) {
         if (!mesh.active[a]) continue;
         const double r = dt / (mesh.grid.h[a] * mesh.grid.h[a]);
         lines.factor(mesh, a, r, state.Phi, eta_in, true, Phi_vac);
-        for (int b0 = 0; b0 < 3; ++b0) {
-            // the normal component last, with its own coefficient if one is given
-            const int b = (a + 1 + b0) % 3;
-            if (normal_eta && b == a) lines.factor(mesh, a, r, state.Phi, normal_eta[a], true, Phi_vac);
+        for (int b = 0; b < 3; ++b) {
             // Right-hand side Phi u, plus 2 dt eta/h^2 U_wall on a moving wall of the domain
             // boundary (embedded walls are at rest).
             const double U_lo = 2.0 * r * walls[a][0][b], U_hi = 2.0 * r * walls[a][1][b];
