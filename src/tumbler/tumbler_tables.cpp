@@ -27,13 +27,17 @@ DataTable drum_outline(const RollingDrumFlow& flow) {
     return outline;
 }
 
-DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what) {
+DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what,
+                            const std::function<bool(std::size_t)>& bed, const InertialPosition& where) {
     DataTable cells({"x", "z", "phi_hat"});
     cells.comment(what + " (bed cells, inertial frame, m; cell size " + format_number(grid.h[0]) + " m)");
     for (int k = 0; k < grid.n[2]; ++k)
         for (int i = 0; i < grid.n[0]; ++i) {
             const std::size_t c = grid.index(i, 0, k);
-            if (grid.is_inside(c)) cells.row({grid.center(0, i), grid.center(2, k), phi_hat[c]});
+            if (!grid.is_inside(c) || (bed && !bed(c))) continue;
+            const std::array<double, 2> xz = where ? where(grid.center(0, i), grid.center(2, k))
+                                                   : std::array<double, 2>{grid.center(0, i), grid.center(2, k)};
+            cells.row({xz[0], xz[1], phi_hat[c]});
         }
     return cells;
 }
