@@ -2,6 +2,7 @@
 #include "closures/closures.hpp"
 #include "core/error.hpp"
 #include "core/scene_file.hpp"
+#include "scenes/material_section.hpp"
 
 #include <boost/test/unit_test.hpp>
 

@@ -126,7 +126,7 @@ BOOST_AUTO_TEST_CASE(fct_leaves_a_uniform_mixture_uniform) {
     FctBulkTransport transport(c.grid);
     transport.step(c.Phi, c.Phi, c.M, {}, bulk_time_step(c.grid, c.Phi, c.M, 1.0), c.phi);
     for (double v : c.phi) BOOST_TEST(v == 0.3, tt::tolerance(1e-15));
-    BOOST_CHECK_THROW(parse_bulk_scheme("upwind"), std::invalid_argument);
+    BOOST_CHECK_THROW(parse_bulk_scheme("upwind"), InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

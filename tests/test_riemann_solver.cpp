@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(negative_coefficients_are_the_mirror_image) {
     }
     const Table1Case c = classify_table1(L, R);
     BOOST_TEST((c.mirrored && c.number == classify_table1({R.phi, R.Phi, 2.0}, {L.phi, L.Phi, 1.0}).number));
-    BOOST_TEST(s.flux == modified_godunov_flux(L, R), tt::tolerance(1e-15));
+    BOOST_TEST(s.flux == modified_godunov_flux({L, R}), tt::tolerance(1e-15));
 }
 
 BOOST_AUTO_TEST_CASE(opposite_signs_empty_or_fill_with_zero_flux) {

@@ -21,7 +21,7 @@
 #include "harness/segregation_run.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 
 #include <algorithm>
 #include <cfloat>

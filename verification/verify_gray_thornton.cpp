@@ -76,7 +76,7 @@ void check_flux_identity(CheckTable& t) {
         const double psi_L = i % 2 ? unit(random) : std::floor(5 * unit(random)) / 4;
         const double psi_R = i % 2 ? unit(random) : std::floor(5 * unit(random)) / 4;
         const double expected = Phi * godunov_gray_thornton(psi_L, psi_R, q);  // phi = Phi psi
-        const double modified = modified_godunov_flux({Phi * psi_L, Phi, q}, {Phi * psi_R, Phi, q});
+        const double modified = modified_godunov_flux({{Phi * psi_L, Phi, q}, {Phi * psi_R, Phi, q}});
         worst = std::max(worst, std::fabs(modified - expected) / (std::fabs(q) * Phi / 4 + 1e-300));
     }
     t.at_most("eq. (63), const Phi: vs Godunov of Gray-Thornton (rel.)", worst, kFluxTolerance);

@@ -86,27 +86,25 @@ void check_discrete_fluxes(CheckTable& t, const RollingDrumFields& f) {
     for (const auto axis : {0, 2})
         for (double m : f.M[axis]) largest = std::max(largest, std::fabs(m));
     long surface = 0, wall = 0, boundary_faces = 0;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c)) continue;
-            double div = 0;
-            for (const auto axis : {0, 2}) {
-                const std::size_t lower = g.face_index(axis, i, 0, k), upper = lower + g.face_stride(axis);
-                div += (f.M[axis][upper] - f.M[axis][lower]) / g.h[axis];
-                // Neighbours across the two faces: outside the grid, in the air, or beyond the wall.
-                for (const int side : {-1, 1}) {
-                    const int ni = i + (axis == 0 ? side : 0), nk = k + (axis == 2 ? side : 0);
-                    const bool off_grid = ni < 0 || ni >= g.n[0] || nk < 0 || nk >= g.n[2];
-                    if (!off_grid && g.is_inside(g.index(ni, 0, nk))) continue;
-                    const double m = f.M[axis][side < 0 ? lower : upper];
-                    ++boundary_faces;
-                    if (m == 0.0) continue;
-                    (!off_grid && f.in_drum[g.index(ni, 0, nk)] ? surface : wall) += 1;
-                }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const int i = b.i, k = b.k;
+        double div = 0;
+        for (const auto axis : {0, 2}) {
+            const std::size_t lower = g.face_index(axis, i, 0, k), upper = lower + g.face_stride(axis);
+            div += (f.M[axis][upper] - f.M[axis][lower]) / g.h[axis];
+            // Neighbours across the two faces: outside the grid, in the air, or beyond the wall.
+            for (const int side : {-1, 1}) {
+                const int ni = i + (axis == 0 ? side : 0), nk = k + (axis == 2 ? side : 0);
+                const bool off_grid = ni < 0 || ni >= g.n[0] || nk < 0 || nk >= g.n[2];
+                if (!off_grid && g.is_inside(g.index(ni, 0, nk))) continue;
+                const double m = f.M[axis][side < 0 ? lower : upper];
+                ++boundary_faces;
+                if (m == 0.0) continue;
+                (!off_grid && f.in_drum[g.index(ni, 0, nk)] ? surface : wall) += 1;
             }
-            worst_div = std::max(worst_div, std::fabs(div));
         }
+        worst_div = std::max(worst_div, std::fabs(div));
+    });
     t.at_most("max |div M| h / max |M| over bed cells", worst_div * g.h[0] / largest, kDivergenceTol);
     t.note("  " + std::to_string(boundary_faces) + " faces between the bed and the air, the wall or the grid boundary");
     t.count("faces bed|air (free surface) with M != 0", surface, 0);
@@ -167,17 +165,16 @@ void check_solid_body(CheckTable& t, const RollingDrumFlow& flow, const RollingD
     const Vector3d omega(0, -flow.Omega(), 0);  // counter-clockwise in the x-z plane seen with y into the page
     double worst = 0;
     long sheared = 0, not_no_shear = 0, core = 0;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c) || f.in_layer[c]) continue;
-            ++core;
-            const Vector3d x(g.center(0, i), 0, g.center(2, k));
-            worst = std::max(worst, (cell_vector(f.u, c) - omega.cross(x)).norm());
-            const Matrix3d grad_rel = cell_tensor(f.grad_rel, c);
-            sheared += grad_rel.cwiseAbs().maxCoeff() != 0.0;
-            not_no_shear += segregation_direction(grad_rel, cell_vector(f.u_rel, c)).status != DirectionStatus::no_shear;
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        if (f.in_layer[c]) return;
+        ++core;
+        const Vector3d x(b.x, 0, b.z);
+        worst = std::max(worst, (cell_vector(f.u, c) - omega.cross(x)).norm());
+        const Matrix3d grad_rel = cell_tensor(f.grad_rel, c);
+        sheared += grad_rel.cwiseAbs().maxCoeff() != 0.0;
+        not_no_shear += segregation_direction(grad_rel, cell_vector(f.u_rel, c)).status != DirectionStatus::no_shear;
+    });
     t.note("solid-body core: " + std::to_string(core) + " bed cells below the layer");
     t.at_most("max |u - Omega x x| / (Omega R) below the layer", worst / (std::fabs(flow.Omega()) * flow.radius()), kSolidTol);
     t.count("cells below the layer with grad u_rel != 0", sheared, 0);
@@ -200,12 +197,10 @@ void check_layer(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFi
     // Thickness at the middle: the deepest cell centre with non-zero shear within |s| < h.
     const Grid& g = f.grid;
     double deepest = 0;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            const auto [s, n] = flow.surface_coordinates(g.center(0, i), g.center(2, k));
-            if (g.is_inside(c) && std::fabs(s) < g.h[0] && shear_rate(cell_tensor(f.grad_rel, c)) > 0) deepest = std::max(deepest, -n);
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const auto [s, n] = flow.surface_coordinates(b.x, b.z);
+        if (std::fabs(s) < g.h[0] && shear_rate(cell_tensor(f.grad_rel, b.c)) > 0) deepest = std::max(deepest, -n);
+    });
     t.near("layer thickness at the middle (deepest sheared cell centre) [m]", deepest, delta0, std::sqrt(2.0) * g.h[0]);
 
     // Shear rate across the middle of the layer (s = 0), derived by hand (docs/sect2.3_direction.md,
@@ -234,22 +229,20 @@ void check_direction(CheckTable& t, const RollingDrumFlow& flow, const RollingDr
     long not_ok = 0;
     DataTable cells({"x", "z", "in_layer", "ux", "uz", "urel_x", "urel_z", "ds_x", "ds_z", "speed", "angle_deg"});
     cells.comment("bed cells of the kinematic drum (inertial frame, m and m/s); d_s signed upwards; angle: d_s vs surface normal");
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c)) continue;
-            const Vector3d u = cell_vector(f.u, c), u_rel = cell_vector(f.u_rel, c);
-            const SegregationDirection r = segregation_direction(cell_tensor(f.grad_rel, c), u_rel);
-            const Vector3d d_s = r.d_s(2) < 0 ? Vector3d(-r.d_s) : r.d_s;
-            const double angle = r.segregates() ? degrees(d_s.dot(flow.normal())) : 0.0;
-            cells.row({g.center(0, i), g.center(2, k), double(f.in_layer[c]), u(0), u(2), u_rel(0), u_rel(2), d_s(0), d_s(2), u.norm(), angle});
-            if (!f.in_layer[c]) continue;
-            not_ok += r.status != DirectionStatus::ok;
-            angles.push_back(angle);
-            const double s = flow.surface_coordinates(g.center(0, i), g.center(2, k))[0];
-            if (std::fabs(s) <= L / 2) central = std::max(central, angle);
-            if (std::fabs(s) <= 0.8 * L) streamline = std::max(streamline, 90 - degrees(d_s.dot(u_rel.normalized())));
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        const Vector3d u = cell_vector(f.u, c), u_rel = cell_vector(f.u_rel, c);
+        const SegregationDirection r = segregation_direction(cell_tensor(f.grad_rel, c), u_rel);
+        const Vector3d d_s = r.d_s(2) < 0 ? Vector3d(-r.d_s) : r.d_s;
+        const double angle = r.segregates() ? degrees(d_s.dot(flow.normal())) : 0.0;
+        cells.row({b.x, b.z, double(f.in_layer[c]), u(0), u(2), u_rel(0), u_rel(2), d_s(0), d_s(2), u.norm(), angle});
+        if (!f.in_layer[c]) return;
+        not_ok += r.status != DirectionStatus::ok;
+        angles.push_back(angle);
+        const double s = flow.surface_coordinates(b.x, b.z)[0];
+        if (std::fabs(s) <= L / 2) central = std::max(central, angle);
+        if (std::fabs(s) <= 0.8 * L) streamline = std::max(streamline, 90 - degrees(d_s.dot(u_rel.normalized())));
+    });
     verify::write_data(options, "kinematic_cells.dat", cells);
     std::sort(angles.begin(), angles.end());
     t.note("direction in the " + std::to_string(angles.size()) + " layer cells: angle to the surface normal p50 " +

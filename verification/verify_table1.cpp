@@ -99,7 +99,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
             const auto& [L, R] = q;
             crossing_states += crossing;
             const RiemannSolution s = solve_riemann(L, R);
-            all.merge(check_exact_solution(s, modified_godunov_flux(L, R)));
+            all.merge(check_exact_solution(s, modified_godunov_flux({L, R})));
             named = std::max(named, std::fabs(s.flux - named_flux(family, L, R)));
             pattern = expected_pattern_of(family, L, R);
             wrong_pattern += wave_pattern(s) != pattern;

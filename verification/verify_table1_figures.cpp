@@ -108,7 +108,7 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
             const int c = classify_table1(L, R).number;
             cell[j * kGrid + i] = c;
             ++hits[c];
-            worst = std::max(worst, std::fabs(solve_riemann(L, R).flux - modified_godunov_flux(L, R)));
+            worst = std::max(worst, std::fabs(solve_riemann(L, R).flux - modified_godunov_flux({L, R})));
         }
     long wrong = 0;
     std::string counts;
@@ -160,7 +160,7 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
 void check_figure5(CheckTable& t, const ProgramOptions& options) {
     const FluxSide L{0.1, 0.5, 1.0}, R{0.3, 0.8, 1.0};
     const RiemannSolution s = solve_riemann(L, R);
-    const SolutionErrors e = check_exact_solution(s, modified_godunov_flux(L, R));
+    const SolutionErrors e = check_exact_solution(s, modified_godunov_flux({L, R}));
     t.count("Fig. 5: case of Q_R = (0.3, 0.8) for Q_L = (0.1, 0.5)", classify_table1(L, R).number, 3);
     t.count("Fig. 5: waves != rarefaction, standing, shock (caption)", wave_pattern(s) != "RCS", 0);
     t.at_most("Fig. 5: rarefaction speed lambda_1(Q_L) (caption: < 0)", s.waves.front().speed_left, -0.1);

@@ -225,7 +225,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
 /// max(f_up, f_M^min, f_down) with the middle curve f_M = f(.; Phi_L, a_R) (docs/sect3_riemann.md).
 void check_staggered(CheckTable& t) {
     const FluxSide L{0.1, 0.4, 2.0}, R{0.6, 0.7, 1.0};
-    const double F63 = modified_godunov_flux(L, R);
+    const double F63 = modified_godunov_flux({L, R});
     const double f_up = f(std::max(L.phi, 0.5 * L.Phi), L.Phi, L.a), f_down = f(std::min(R.phi, 0.5 * R.Phi), R.Phi, R.a);
     const double F_composite = std::max({f_up, f_down, -0.25 * R.a * L.Phi});
     const double w = kWidths[3];

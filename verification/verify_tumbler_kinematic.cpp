@@ -92,27 +92,25 @@ void check_direction(CheckTable& t, const KinematicTumbler& tumbler) {
     std::vector<double> angles;
     double central = 0, worst = 0;
     long wrong_sign = 0, silent = 0, outside = 0;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c)) continue;
-            const Eigen::Vector3d a(tumbler.frozen().a[0][c], 0.0, tumbler.frozen().a[2][c]);
-            if (!tumbler.fields().in_layer[c]) {
-                outside += a.squaredNorm() != 0.0;
-                continue;
-            }
-            if (a.squaredNorm() == 0.0) {
-                ++silent;
-                continue;
-            }
-            // a = (S^sl): small particles move along -a; in the layer that must point into the bed.
-            wrong_sign += a.dot(n) <= 0.0;
-            const double angle = degrees(a.normalized().dot(n));
-            angles.push_back(angle);
-            worst = std::max(worst, angle);
-            if (std::fabs(flow.surface_coordinates(g.center(0, i), g.center(2, k))[0]) <= flow.half_chord() / 2)
-                central = std::max(central, angle);
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        const Eigen::Vector3d a(tumbler.frozen().a[0][c], 0.0, tumbler.frozen().a[2][c]);
+        if (!tumbler.fields().in_layer[c]) {
+            outside += a.squaredNorm() != 0.0;
+            return;
         }
+        if (a.squaredNorm() == 0.0) {
+            ++silent;
+            return;
+        }
+        // a = (S^sl): small particles move along -a; in the layer that must point into the bed.
+        wrong_sign += a.dot(n) <= 0.0;
+        const double angle = degrees(a.normalized().dot(n));
+        angles.push_back(angle);
+        worst = std::max(worst, angle);
+        if (std::fabs(flow.surface_coordinates(b.x, b.z)[0]) <= flow.half_chord() / 2)
+            central = std::max(central, angle);
+    });
     std::sort(angles.begin(), angles.end());
     t.note("direction of a = S^sl in " + std::to_string(angles.size()) + " layer cells vs the surface normal: median " +
            verify::format(angles[angles.size() / 2]) + ", max " + verify::format(worst) + " deg (at the ends of the surface)");
@@ -127,11 +125,9 @@ void check_direction(CheckTable& t, const KinematicTumbler& tumbler) {
 double inner_composition(const KinematicTumbler& tumbler, double radius) {
     const Grid& g = tumbler.grid();
     double small = 0, all = 0;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (g.is_inside(c) && std::hypot(g.center(0, i), g.center(2, k)) < radius) small += tumbler.phi()[c], all += tumbler.Phi()[c];
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        if (std::hypot(b.x, b.z) < radius) small += tumbler.phi()[b.c], all += tumbler.Phi()[b.c];
+    });
     return small / all;
 }
 

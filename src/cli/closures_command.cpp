@@ -5,6 +5,7 @@
 #include "closures/closures.hpp"
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "scenes/material_section.hpp"
 
 #include <cmath>
 #include <iostream>

@@ -2,7 +2,10 @@
 // Validates and runs a scene file; outputs go below [output] dir (or DIR).
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "closures/material.hpp"
 #include "scenes/scene_kind.hpp"
+#include "segregation/column.hpp"
+#include "segregation/scheme.hpp"
 
 #include <iostream>
 
@@ -18,6 +21,12 @@ int run_main(const std::vector<std::string>& args) {
     positional.add("scene", 1);
     std::string usage = "SCENE.toml [--output-dir DIR]\n\nscene kinds ([scene] kind):\n";
     for (const auto& kind : scene_kinds()) usage += "  " + kind.name + ": " + kind.summary + "\n";
+    usage += "\nchoices (docs/scenes.md lists which scene kinds read which key):\n";
+    usage += "  [segregation] scheme:\n" + describe_choices(kSegregationSchemes);
+    usage += "  [segregation] limiter (order-2 schemes):\n" + describe_choices(kLimiters);
+    usage += "  [segregation] interface (schemes with interface values):\n" + describe_choices(kInterfaceRules);
+    usage += "  [bulk] scheme:\n" + describe_choices(kBulkSchemes);
+    usage += "  [material] g_law:\n" + describe_choices(kCompressibilityLaws);
     po::variables_map vm;
     if (!parse_options("run", usage, args, desc, positional, vm)) return 0;
     for (const auto& file : run_scene_file(scene, output_dir)) std::cout << "wrote " << file << '\n';

@@ -1,61 +1,13 @@
 #include "closures/material.hpp"
 
-#include "core/scene_file.hpp"
-
 #include <cmath>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 
 namespace granseg {
-
-namespace {
-constexpr int kDefaultPackingDegree = 4;  // docs/assumptions.md A3: max residual 0.0022 on the table
-}
 
 Material Material::glass_substitute() {
     return Material{PackingFit(builtin_packing_table(), kDefaultPackingDegree)};
 }
 
 double Material::shear_friction() const { return std::sqrt(2.0 * eta0 * eps0 / 3.0); }
-
-Material read_material(const SceneFile& scene) {
-    const std::string s = "material";
-    Material m = Material::glass_substitute();
-    m.eta0 = scene.number(s, "eta0", Range::above(0), m.eta0);
-    m.lambda0 = scene.number(s, "lambda0", Range::above(0), m.lambda0);
-    m.eps0 = scene.number(s, "eps0", Range::above(0), m.eps0);
-    m.T0 = scene.number(s, "T0", Range::at_least(0), m.T0);
-    m.rho_star = scene.number(s, "rho_star", Range::above(0), m.rho_star);
-    const std::string law = scene.choice(s, "g_law", {"power", "lun-savage"}, "power");
-    m.g_law = law == "power" ? CompressibilityLaw::power : CompressibilityLaw::lun_savage;
-    m.beta = scene.number(s, "beta", Range::left_open(0, 10), m.beta);
-    if (law != "power" && scene.has(s, "beta"))
-        scene.fail(s, "beta", "only used with g_law = \"power\"", "remove beta or set g_law = \"power\"");
-
-    const std::string path = scene.text(s, "packing_table", "");
-    const long degree = scene.integer(s, "packing_degree", 1, 8, kDefaultPackingDegree);
-    if (!path.empty() || degree != kDefaultPackingDegree) {
-        PackingTable table = builtin_packing_table();
-        if (!path.empty()) {
-            std::ifstream in(path);
-            if (!in) scene.fail(s, "packing_table", "cannot open \"" + path + "\"", "path of a readable file");
-            std::ostringstream text;
-            text << in.rdbuf();
-            try {
-                table = parse_packing_table(text.str(), path);
-            } catch (const std::invalid_argument& e) {
-                scene.fail(s, "packing_table", e.what(), "columns '# phi_hat Phi_rcp Phi_co'");
-            }
-        }
-        try {
-            m.packing = PackingFit(std::move(table), static_cast<int>(degree));
-        } catch (const std::invalid_argument& e) {
-            scene.fail(s, path.empty() ? "packing_degree" : "packing_table", e.what(),
-                       "a fit with 0 < Phi_co < Phi_rcp < 1 on [0, 1]");
-        }
-    }
-    return m;
-}
 
 }  // namespace granseg

@@ -8,17 +8,19 @@
 #pragma once
 
 #include "closures/packing.hpp"
-
-#include <string>
+#include "core/choice.hpp"
 
 namespace granseg {
 
-class SceneFile;
+/// Degree of the default packing fits (docs/assumptions.md A3: max residual 0.0022 on the table).
+constexpr int kDefaultPackingDegree = 4;
 
-/// The compressibility factor's functional form (eq. 18 substitute, docs/assumptions.md A1).
-enum class CompressibilityLaw {
-    power,       // g = (1 - Phi/Phi_rcp)^(-beta), default beta = 1
-    lun_savage,  // g = (1 - Phi/Phi_rcp)^(-2.5 Phi_rcp) (Lun & Savage), i.e. beta = 2.5 Phi_rcp
+/// The compressibility factor's functional form (eq. 18 substitute, docs/assumptions.md A1);
+/// its exponent is compressibility_exponent() in closures.hpp.
+enum class CompressibilityLaw { power, lun_savage };
+inline constexpr Choice<CompressibilityLaw> kCompressibilityLaws[] = {
+    {CompressibilityLaw::power, "power", "g = (1 - Phi/Phi_rcp)^(-beta), beta = [material] beta (default 1)"},
+    {CompressibilityLaw::lun_savage, "lun-savage", "g = (1 - Phi/Phi_rcp)^(-2.5 Phi_rcp) (Lun & Savage)"},
 };
 
 struct Material {
@@ -38,10 +40,5 @@ struct Material {
     /// tau/p = sqrt(2 eta0 eps0 / 3); eq. (21) prints sqrt(eps0 eta0) (docs/assumptions.md A6).
     double shear_friction() const;
 };
-
-/// Reads the optional [material] section of a scene (every key defaults to glass_substitute()).
-/// Keys: eta0, lambda0, eps0, T0, rho_star, g_law ("power" | "lun-savage"), beta,
-/// packing_table (path, default built-in), packing_degree.
-Material read_material(const SceneFile& scene);
 
 }  // namespace granseg

@@ -6,10 +6,11 @@
 
 namespace granseg {
 
-/// v in %g style with `digits` significant digits ("nan", "inf" for non-finite values).
+/// v in %g style with `digits` significant digits ("nan", "inf" for non-finite values; a
+/// negative zero prints as "0").
 inline std::string format_number(double v, int digits = 6) {
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v == 0.0 ? 0.0 : v);
     return buf;
 }
 

@@ -58,4 +58,22 @@ struct Grid {
     double cell_volume() const { return h[0] * h[1] * h[2]; }
 };
 
+/// A bed cell (an inside cell) of an x-z plane grid: its linear index, column i, layer k, centre.
+struct BedCell {
+    std::size_t c;
+    int i, k;
+    double x, z;
+};
+
+/// Calls visit(const BedCell&) for every inside cell of an x-z plane grid (ny = 1), layer by
+/// layer from the bottom, each layer in increasing x: the order of the linear index.
+template <class Visit>
+void for_each_bed_cell(const Grid& grid, Visit&& visit) {
+    for (int k = 0; k < grid.n[2]; ++k)
+        for (int i = 0; i < grid.n[0]; ++i) {
+            const std::size_t c = grid.index(i, 0, k);
+            if (grid.is_inside(c)) visit(BedCell{c, i, k, grid.center(0, i), grid.center(2, k)});
+        }
+}
+
 }  // namespace granseg

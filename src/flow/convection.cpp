@@ -83,6 +83,7 @@ void FlowSolver::flow_loads(int a, double g_a, double weight) {
     const std::size_t nx = grid_.n[0], ny = grid_.n[1];
     double *load = load_[a].data(), *carry = carry_[a].data(), *out = work_.data();
     const double *Phi = Phi_.data(), *p = p_.data(), *psi = psi_.data(), *psi_face = psi_face_[a].data();
+    const double* co = Phi_co_.data();
     const unsigned char *in = inside_.data(), *kind = face_kind_[a].data();
     const double Phi_vac = settings_.Phi_vacuum;
     const int dir = weight == 0.0 ? 0 : g_a < 0.0 ? -1 : 1;  // sweep direction along the axis
@@ -95,7 +96,12 @@ void FlowSolver::flow_loads(int a, double g_a, double weight) {
         // The cell above along the sweep is the uphill neighbour when it was visited just before.
         const bool from_hi = up_hi && dir < 0 && kind[fu] == kInterior, from_lo = up_lo && dir > 0 && kind[fl] == kInterior;
         const double arriving = from_hi ? out[c + hi] : from_lo ? out[c + lo] : 0.0;
-        carry[c] = unsupported ? weight * arriving : 0.0;
+        // It passes that on only while it and what rests on it would fit into the cell at the
+        // loosest load-bearing packing Phi_co (arriving / (rise + fall) is the volume fraction the
+        // material above would add): a partly filled surface cell with dust on it rests on the
+        // cell below; loose material that fills the cell holds nothing up and compacts.
+        const bool rests = (Phi[c] - co[c]) * (rise + fall) + arriving <= 0.0;
+        carry[c] = unsupported && rests ? weight * arriving : 0.0;
         load[c] = filled ? unsupported_load(Phi[c], p[c], rise) + carry[c] : 0.0;
         out[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };

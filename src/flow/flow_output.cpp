@@ -127,6 +127,7 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
             }
         }
     d.surface_points = static_cast<int>(points.size());
+    d.surface_angle_deg = NAN;
     if (points.size() >= 2) {
         double mx = 0, mz = 0;
         for (const auto& p : points) mx += p[0], mz += p[1];
@@ -139,7 +140,8 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         double angle = theta - horizontal;
         while (angle > M_PI / 2) angle -= M_PI;
         while (angle <= -M_PI / 2) angle += M_PI;
-        d.surface_angle_deg = angle * 180.0 / M_PI;
+        // Measured counter-clockwise; a drum turning clockwise lifts the surface the other way.
+        d.surface_angle_deg = (f.omega < 0.0 ? -1.0 : 1.0) * angle * 180.0 / M_PI;
     }
     double mass = 0.0, flowing = 0.0;
     for (std::size_t c = 0; c < g.cells(); ++c) {

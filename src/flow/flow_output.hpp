@@ -39,7 +39,8 @@ std::string flow_vtk(const FlowSolver& solver);
 /// Drum diagnostics in the solver's (rotating) frame.
 struct DrumState {
     double surface_angle_deg;  // angle of the free surface against the horizontal, > 0 when it
-                               // rises in the direction the drum turns (counter-clockwise)
+                               // rises in the direction the drum turns (either sense); NaN with
+                               // fewer than two surface points within `radius`
     int surface_points;        // crossings of Phi = Phi_level used for the fit
     double flowing_fraction;   // share of the granular mass moving faster than v_flow relative to the drum
     double max_speed;          // m/s, largest |u| relative to the drum over cells with Phi > Phi_level

@@ -12,7 +12,13 @@
 // (docs/assumptions.md S1; the concave form is not minus eq. (63): left and right swap roles).
 // The classic fluxes the paper compares with use ONE flux function, with interface values
 // Phi_face and a_face, and so ignore condition (51).
+//
+// Every interface flux has the same signature, double F(const InterfaceStates&), so that the
+// scheme table (src/segregation/scheme.hpp) can hold any of them; a new flux is one function
+// here and one row there.
 #pragma once
+
+#include <limits>
 
 namespace granseg {
 
@@ -31,15 +37,42 @@ struct FluxSide {
     double phi, Phi, a;
 };
 
-/// Modified Godunov flux, eqs. (61)-(63), extended to coefficients of any sign (see above).
-double modified_godunov_flux(const FluxSide& L, const FluxSide& R);
+/// What an interface flux sees: the state either side of the face, each with its own cell's
+/// Phi and a, and the interface values Phi_face, a_face read by the fluxes that use one flux
+/// function per face (NaN unless given; the fluxes of each cell's own flux function ignore them).
+struct InterfaceStates {
+    FluxSide L, R;
+    double Phi_face = std::numeric_limits<double>::quiet_NaN();
+    double a_face = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The signature of every interface flux.
+using InterfaceFlux = double (*)(const InterfaceStates& q);
+
+/// The interface values of rule "mean" (docs/assumptions.md G2): Phi_face, a_face the means of
+/// the two cells' values.
+InterfaceStates mean_interface(const FluxSide& L, const FluxSide& R);
+
+/// Modified Godunov flux, eqs. (61)-(63), extended to coefficients of any sign (see above);
+/// reads L and R, not the interface values.
+double modified_godunov_flux(const InterfaceStates& q);
 
 /// Classic upwind (Murman-Roe) flux of the single function f(.; Phi_face, a_face): f(phi_L) if
-/// the Rankine-Hugoniot speed of (phi_L, phi_R) is >= 0, else f(phi_R).
-double classic_upwind_flux(double phi_L, double phi_R, double Phi_face, double a_face);
+/// the Rankine-Hugoniot speed of (phi_L, phi_R) is >= 0, else f(phi_R). Reads L.phi, R.phi and
+/// the interface values.
+double classic_upwind_flux(const InterfaceStates& q);
 
 /// Classic Godunov flux of the single function f(.; Phi_face, a_face): the minimum of f over
-/// [phi_L, phi_R] if phi_L <= phi_R, else its maximum over [phi_R, phi_L].
-double classic_godunov_flux(double phi_L, double phi_R, double Phi_face, double a_face);
+/// [phi_L, phi_R] if phi_L <= phi_R, else its maximum over [phi_R, phi_L]. Reads L.phi, R.phi
+/// and the interface values.
+double classic_godunov_flux(const InterfaceStates& q);
+
+/// Local Lax-Friedrichs (Rusanov) flux with each cell's own flux function, a teaching row of the
+/// scheme table (beyond the paper):
+///     F = (f_L(phi_L) + f_R(phi_R))/2 - alpha (phi_R - phi_L)/2,
+///     alpha = max(|f_L'(phi_L)|, |f_R'(phi_R)|)   (eq. 55 on each side).
+/// Consistent and conservative; its dissipation acts on phi, not on phi_hat = phi/Phi, so where
+/// Phi jumps it moves small particles into a full cell (docs/sect4.1_overshoot.md, the flux table).
+double rusanov_flux(const InterfaceStates& q);
 
 }  // namespace granseg

@@ -2,6 +2,7 @@
 
 #include "closures/closures.hpp"
 #include "core/format.hpp"
+#include "scenes/material_section.hpp"
 
 #include <cmath>
 

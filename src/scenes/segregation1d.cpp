@@ -4,7 +4,7 @@
 #include "core/progress.hpp"
 #include "segregation/column.hpp"
 #include "segregation/invariants.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 
 #include <algorithm>
 #include <cmath>

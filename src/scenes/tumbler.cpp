@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "scenes/flow_scenes.hpp"
+#include "scenes/material_section.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -43,7 +44,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.segregation.scheme = parse_scheme(scene.choice(seg, "scheme", scheme_names(), "modified-godunov"));
     if (!preserves_bounds(s.segregation.scheme))
         scene.fail(seg, "scheme", "\"" + scheme_name(s.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
-                   "modified-godunov, modified-godunov-2");
+                   bounded_scheme_names());
     s.segregation.limiter = parse_limiter(scene.choice(seg, "limiter", limiter_names(), "mc"));
     s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
     s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);

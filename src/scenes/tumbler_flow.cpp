@@ -7,6 +7,7 @@
 
 #include "core/format.hpp"
 #include "flow/flow_output.hpp"
+#include "scenes/material_section.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #include "scenes/tumbler_kinematic.hpp"
 
 #include "core/format.hpp"
+#include "scenes/material_section.hpp"
 #include "tumbler/tumbler_tables.hpp"
 
 #include <cmath>
@@ -55,7 +56,7 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     k.segregation.limiter = parse_limiter(scene.choice("segregation", "limiter", limiter_names(), "mc"));
     if (!preserves_bounds(k.segregation.scheme))
         scene.fail("segregation", "scheme", "\"" + scheme_name(k.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
-                   "modified-godunov, modified-godunov-2");
+                   bounded_scheme_names());
     k.bulk = parse_bulk_scheme(scene.choice("bulk", "scheme", bulk_scheme_names(), "fct"));
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     k.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
@@ -67,14 +68,12 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     try {
         const RollingDrumFields fields = discretize(RollingDrumFlow(drum), k.cells_per_diameter, k.Phi);
         const Grid& g = fields.grid;
-        for (int kk = 0; kk < g.n[2]; ++kk)
-            for (int i = 0; i < g.n[0]; ++i) {
-                if (!g.is_inside(g.index(i, 0, kk))) continue;
-                const double x = g.center(0, i), z = g.center(2, kk), v = k.phi_hat0(x, z);
-                if (!(v >= 0.0 && v <= 1.0))
-                    scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(x) + ", z = " + format_number(z),
-                               "0 <= phi_hat <= 1 at every bed cell");
-            }
+        for_each_bed_cell(g, [&](const BedCell& b) {
+            const double v = k.phi_hat0(b.x, b.z);
+            if (!(v >= 0.0 && v <= 1.0))
+                scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+                           "0 <= phi_hat <= 1 at every bed cell");
+        });
         s.run.regions = default_regions(RollingDrumFlow(drum));
     } catch (const std::invalid_argument& e) {
         scene.fail("drum", "diameter", e.what(), "a drum of docs/scenes.md");

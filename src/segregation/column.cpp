@@ -5,17 +5,6 @@
 
 namespace granseg {
 
-const std::vector<std::string>& interface_rule_names() {
-    static const std::vector<std::string> names = {"exact", "mean"};
-    return names;
-}
-
-InterfaceRule parse_interface_rule(const std::string& name) {
-    if (name == "exact") return InterfaceRule::exact;
-    if (name == "mean") return InterfaceRule::mean;
-    throw std::invalid_argument("unknown interface rule \"" + name + "\" (allowed: exact, mean)");
-}
-
 Column make_column(const ColumnSetup& setup) {
     Column c;
     c.grid = Grid::column(setup.cells, setup.length);

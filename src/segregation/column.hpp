@@ -4,6 +4,7 @@
 // programs and the benchmark, so they all run exactly the same discretisation.
 #pragma once
 
+#include "core/choice.hpp"
 #include "segregation/frozen_fields.hpp"
 
 #include <functional>
@@ -12,13 +13,16 @@
 
 namespace granseg {
 
-/// Where the classic schemes take Phi and T at a face (docs/assumptions.md G2).
-enum class InterfaceRule {
-    exact,  // the profiles evaluated at the face ("the exact value", Sect. 4.1)
-    mean    // the arithmetic mean of the two neighbouring cells
+/// Where the schemes with interface values take Phi and T at a face (docs/assumptions.md G2).
+enum class InterfaceRule { exact, mean };
+inline constexpr Choice<InterfaceRule> kInterfaceRules[] = {
+    {InterfaceRule::exact, "exact", "Phi(z), T(z) evaluated at the face, \"the exact value\" of Sect. 4.1 (default)"},
+    {InterfaceRule::mean, "mean", "the arithmetic mean of the two neighbouring cells"},
 };
-InterfaceRule parse_interface_rule(const std::string& name);  // "exact", "mean"; std::invalid_argument otherwise
-const std::vector<std::string>& interface_rule_names();
+inline std::vector<std::string> interface_rule_names() { return choice_names(kInterfaceRules); }
+inline InterfaceRule parse_interface_rule(const std::string& name) {
+    return parse_choice(kInterfaceRules, name, "interface rule");  // InputError for an unknown name
+}
 
 struct ColumnSetup {
     int cells = 50;

@@ -17,19 +17,20 @@ void segregation_face_fluxes(const Grid& grid, int axis, const FrozenFields& fie
     const std::vector<double>& Phi_face = fields.Phi_face[axis];
     const std::vector<double>& a_face = fields.a_face[axis];
     const double diffusion = fields.D / grid.h[axis];
+    const InterfaceFlux interface_flux = scheme.row().flux;
+    const bool interface_values = scheme.row().interface_values;
     for_each_face(grid, axis, [&](const FaceCells& f) {
         if (!is_open_face(grid, f)) return;  // zero-flux wall
         const std::size_t L = f.lower, U = f.upper;
-        const double phi_L = at_upper[L], phi_U = at_lower[U];  // the states either side of the face
-        double flux;
-        if (preserves_bounds(scheme)) {
-            flux = modified_godunov_flux({phi_L, Phi[L], a[L]}, {phi_U, Phi[U], a[U]});  // (eq. 63)
-        } else {
-            const double Phi_f = Phi_face.empty() ? 0.5 * (Phi[L] + Phi[U]) : Phi_face[f.face];
-            const double a_f = a_face.empty() ? 0.5 * (a[L] + a[U]) : a_face[f.face];
-            flux = scheme == SegregationScheme::classic_upwind ? classic_upwind_flux(phi_L, phi_U, Phi_f, a_f)
-                                                               : classic_godunov_flux(phi_L, phi_U, Phi_f, a_f);
+        // The states either side of the face: each cell's value there, with its own Phi and a;
+        // the interface values where the scheme reads them: given, else the means (assumption G2).
+        // (Built in place: copying the struct stalls store forwarding, +60 % run time.)
+        InterfaceStates q{{at_upper[L], Phi[L], a[L]}, {at_lower[U], Phi[U], a[U]}};
+        if (interface_values) {
+            q.Phi_face = Phi_face.empty() ? 0.5 * (Phi[L] + Phi[U]) : Phi_face[f.face];
+            q.a_face = a_face.empty() ? 0.5 * (a[L] + a[U]) : a_face[f.face];
         }
+        double flux = interface_flux(q);  // e.g. eq. (63)
         if (diffusion > 0.0)  // remixing, -D Phi_face d(phi_hat)/dx (docs/assumptions.md G3)
             flux -= diffusion * std::min(Phi[L], Phi[U]) * (composition(phi[U], Phi[U]) - composition(phi[L], Phi[L]));
         F[f.face] = flux;

@@ -1,11 +1,13 @@
-// The segregation flux on every face of one axis, for each scheme, plus the remixing flux.
+// The segregation flux on every face of one axis, for any scheme of the table, plus the
+// remixing flux.
 //
 // The face between a lower cell L and an upper cell U sees the state L presents at its upper
 // face and the state U presents at its lower face (the cell averages for first order, the
-// reconstructed values for modified-godunov-2):
-//   modified schemes:  F = modified_godunov_flux({phi_L, Phi_L, a_L}, {phi_U, Phi_U, a_U})  (eq. 63)
-//   classic schemes:   F = classic_*_flux(phi_L, phi_U, Phi_face, a_face)  (Sect. 4.1)
-// and F = 0 on walls (zero-flux ends, embedded walls, non-periodic domain boundaries).
+// reconstructed values for order 2), each with its own cell's Phi and a, and, for the schemes
+// that read them, the interface values Phi_face, a_face (given, or the means, assumption G2):
+//   F = scheme.row().flux({{phi_L, Phi_L, a_L}, {phi_U, Phi_U, a_U}, Phi_face, a_face})
+// (eq. 63 for the modified schemes) and F = 0 on walls (zero-flux ends, embedded walls,
+// non-periodic domain boundaries).
 #pragma once
 
 #include "segregation/frozen_fields.hpp"

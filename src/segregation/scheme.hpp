@@ -1,48 +1,115 @@
-// The selectable schemes of the segregation sub-step and their names in scene files.
-//
-//   modified-godunov    eqs. (61)-(63) with each cell's own flux function (default; first order)
-//   modified-godunov-2  the same flux on limited reconstructions of phi_hat = phi/Phi, with the
-//                       SSP-RK(3,2) method (second order where the solution is smooth; beyond
-//                       the paper)
-//   classic-upwind      one flux function per face with interface values Phi_face, a_face (the
-//   classic-godunov     paper's comparisons in Fig. 6); they ignore condition (51) and overshoot
+// The numerical choices of the segregation sub-step, each in one table: the interface fluxes
+// (one row per scheme), the slope limiters and the bulk transport schemes. Scene files, error
+// messages, `granseg run --help`, the solver and the verification programs all read these
+// tables, so a new scheme is one row below and one flux function in
+// src/riemann/segregation_flux.{hpp,cpp} (docs/tutorial.md, exercise 1).
 #pragma once
 
+#include "core/choice.hpp"
+#include "riemann/segregation_flux.hpp"
+
+#include <cstddef>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace granseg {
 
-enum class SegregationScheme { modified_godunov, modified_godunov_2, classic_upwind, classic_godunov };
+/// A row of the scheme table.
+struct SchemeRow {
+    std::string_view name;     // value of [segregation] scheme
+    InterfaceFlux flux;        // F at a face from the states either side (riemann/segregation_flux.hpp)
+    int order;                 // 1: cell averages, one forward-Euler stage per axis; 2: limited
+                               //    reconstruction of phi_hat (reconstruction.hpp) and SSP-RK(3,2)
+    bool bounded;              // keeps 0 <= phi <= Phi for cfl <= 1 (then the solver clips round-off, G5)
+    bool interface_values;     // reads Phi_face, a_face (one flux function per face)
+    std::string_view summary;  // one line for `granseg run --help`
+};
+
+/// The segregation schemes. `bounded` is a claim that verify_overshoot and verify_table1_sweep
+/// check for every row (kept if true, broken somewhere if false), `order` one that
+/// verify_segregation_extensions checks on a smooth solution.
+inline constexpr SchemeRow kSegregationSchemes[] = {
+    // name               flux                   order bounded interface values
+    {"modified-godunov",   modified_godunov_flux,  1,   true,   false,
+     "eqs. (61)-(63) with each cell's own flux function (default)"},
+    {"modified-godunov-2", modified_godunov_flux,  2,   true,   false,
+     "eq. (63) on limited reconstructions of phi_hat, SSP-RK(3,2) (beyond the paper)"},
+    {"classic-upwind",     classic_upwind_flux,    1,   false,  true,
+     "Murman-Roe upwind flux of one flux function per face (Fig. 6 comparison)"},
+    {"classic-godunov",    classic_godunov_flux,   1,   false,  true,
+     "Godunov flux of one flux function per face (Fig. 6 comparison)"},
+    {"rusanov",            rusanov_flux,           1,   false,  false,
+     "local Lax-Friedrichs with each cell's own flux function (teaching example)"},
+};
+
+/// A segregation scheme: a row of kSegregationSchemes, held by its position.
+class SegregationScheme {
+public:
+    /// The rows the code refers to by name (found by name at compile time).
+    static const SegregationScheme modified_godunov, modified_godunov_2, classic_upwind, classic_godunov;
+
+    /// The scheme called `name`; a compile-time error in a constant expression, std::logic_error
+    /// otherwise (scene files go through parse_scheme, which throws InputError).
+    static constexpr SegregationScheme named(std::string_view name) {
+        for (std::size_t i = 0; i < std::size(kSegregationSchemes); ++i)
+            if (kSegregationSchemes[i].name == name) return SegregationScheme(i);
+        throw std::logic_error("no segregation scheme \"" + std::string(name) + "\"");
+    }
+    /// Every scheme, in the order of the table.
+    static std::vector<SegregationScheme> all() {
+        std::vector<SegregationScheme> schemes;
+        for (std::size_t i = 0; i < std::size(kSegregationSchemes); ++i) schemes.push_back(SegregationScheme(i));
+        return schemes;
+    }
+
+    constexpr const SchemeRow& row() const { return kSegregationSchemes[position_]; }
+    constexpr bool operator==(SegregationScheme other) const { return position_ == other.position_; }
+    constexpr bool operator!=(SegregationScheme other) const { return position_ != other.position_; }
+
+private:
+    constexpr explicit SegregationScheme(std::size_t position) : position_(position) {}
+    std::size_t position_;
+};
+
+inline constexpr SegregationScheme SegregationScheme::modified_godunov = SegregationScheme::named("modified-godunov");
+inline constexpr SegregationScheme SegregationScheme::modified_godunov_2 = SegregationScheme::named("modified-godunov-2");
+inline constexpr SegregationScheme SegregationScheme::classic_upwind = SegregationScheme::named("classic-upwind");
+inline constexpr SegregationScheme SegregationScheme::classic_godunov = SegregationScheme::named("classic-godunov");
+
+/// Scene-file names of the schemes, in table order; the scheme of a name (InputError if unknown).
+inline std::vector<std::string> scheme_names() { return choice_names(kSegregationSchemes); }
+SegregationScheme parse_scheme(const std::string& name);
+inline std::string scheme_name(SegregationScheme s) { return std::string(s.row().name); }
+/// Names of the rows with bounded = true ("modified-godunov, modified-godunov-2").
+std::string bounded_scheme_names();
+
+/// Row fields, for readability at the call site.
+inline bool preserves_bounds(SegregationScheme s) { return s.row().bounded; }
+inline bool uses_interface_values(SegregationScheme s) { return s.row().interface_values; }
+inline int scheme_order(SegregationScheme s) { return s.row().order; }
 
 /// Slope limiter of the second-order reconstruction of phi_hat.
 enum class Limiter { minmod, mc };
+inline constexpr Choice<Limiter> kLimiters[] = {
+    {Limiter::minmod, "minmod", "the smaller one-sided slope (most diffusive)"},
+    {Limiter::mc, "mc", "monotonized central (default)"},
+};
 
 /// Bulk transport of a scene without a flow solver: the coupling contract's donor cell, or
 /// flux-corrected transport (bulk_transport_fct.hpp).
 enum class BulkScheme { donor_cell, fct };
+inline constexpr Choice<BulkScheme> kBulkSchemes[] = {
+    {BulkScheme::donor_cell, "donor-cell", "first-order donor cell in phi_hat (the coupling contract, eq. 65)"},
+    {BulkScheme::fct, "fct", "flux-corrected transport (Zalesak), assumption T5 (tumbler-kinematic default)"},
+};
 
-/// Scene-file names, in the order listed in messages ("modified-godunov", ...).
-const std::vector<std::string>& scheme_names();
-const std::vector<std::string>& limiter_names();
-const std::vector<std::string>& bulk_scheme_names();  // "donor-cell", "fct"
-
-/// Name <-> value; the parsers throw std::invalid_argument for an unknown name.
-SegregationScheme parse_scheme(const std::string& name);
-std::string scheme_name(SegregationScheme scheme);
-Limiter parse_limiter(const std::string& name);
-std::string limiter_name(Limiter limiter);
-BulkScheme parse_bulk_scheme(const std::string& name);
-
-/// True for the schemes that keep 0 <= phi <= Phi (the modified ones).
-inline bool preserves_bounds(SegregationScheme s) {
-    return s == SegregationScheme::modified_godunov || s == SegregationScheme::modified_godunov_2;
-}
-
-/// True for the schemes that read interface values Phi_face, a_face (the classic ones).
-inline bool uses_interface_values(SegregationScheme s) { return !preserves_bounds(s); }
-
-/// Spatial and temporal order on smooth solutions: 2 for modified-godunov-2, else 1.
-inline int scheme_order(SegregationScheme s) { return s == SegregationScheme::modified_godunov_2 ? 2 : 1; }
+inline std::vector<std::string> limiter_names() { return choice_names(kLimiters); }
+inline Limiter parse_limiter(const std::string& name) { return parse_choice(kLimiters, name, "limiter"); }
+inline std::string limiter_name(Limiter l) { return choice_name(kLimiters, l); }
+inline std::vector<std::string> bulk_scheme_names() { return choice_names(kBulkSchemes); }
+inline BulkScheme parse_bulk_scheme(const std::string& name) { return parse_choice(kBulkSchemes, name, "bulk scheme"); }
+inline std::string bulk_scheme_name(BulkScheme b) { return choice_name(kBulkSchemes, b); }
 
 }  // namespace granseg

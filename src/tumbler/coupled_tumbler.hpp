@@ -35,7 +35,7 @@
 #include "flow/flow_solver.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/frozen_fields.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 #include "tumbler/drum.hpp"
 
 #include <functional>

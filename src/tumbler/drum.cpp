@@ -51,7 +51,7 @@ std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid) {
 }
 
 void AngleOfRepose::add(double t, double angle_deg) {
-    if (t < from_) return;
+    if (t < from_ || !std::isfinite(angle_deg)) return;  // NaN: no surface crossing within 0.8 R
     sum_ += angle_deg, sum2_ += angle_deg * angle_deg, ++n_;
 }
 

@@ -65,7 +65,8 @@ std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, con
 /// fraction of its height for the cell holding the surface; 0 outside the drum).
 std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid);
 
-/// Mean and standard deviation of the free-surface angle over the samples taken at t >= from.
+/// Mean and standard deviation of the free-surface angle over the samples taken at t >= from
+/// (samples without an angle, NaN, left out).
 class AngleOfRepose {
 public:
     explicit AngleOfRepose(double from) : from_(from) {}

@@ -43,25 +43,23 @@ KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
     const Eigen::Vector3d gravity(0.0, 0.0, -setup.gravity);
     DirectionOptions planar;
     planar.planar_xz = true;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c)) continue;
-            ++bed_cells_;
-            const double x = g.center(0, i), z = g.center(2, k), phi_hat = setup.phi_hat0(x, z);
-            if (!(phi_hat >= 0.0 && phi_hat <= 1.0))
-                throw std::invalid_argument("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " +
-                                            format_number(x) + ", z = " + format_number(z) + " outside [0, 1]");
-            frozen_.Phi[c] = setup.Phi;
-            phi_[c] = phi_hat * setup.Phi;
-            const Eigen::Matrix3d grad_rel = cell_tensor(fields_.grad_rel, c);
-            const SegregationDirection dir = segregation_direction(grad_rel, cell_vector(fields_.u_rel, c), planar);
-            const Eigen::Vector3d d_s = dir.d_s.dot(flow_.normal()) < 0.0 ? Eigen::Vector3d(-dir.d_s) : dir.d_s;
-            T_[c] = steady_shear_temperature(setup.material, shear_rate(grad_rel));  // (eq. 45)
-            const Eigen::Vector3d a = segregation_velocity(setup.S, T_[c], d_s, gravity);  // (eq. 46)
-            frozen_.a[0][c] = a(0), frozen_.a[2][c] = a(2);
-            ds_x_[c] = d_s(0), ds_z_[c] = d_s(2);
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        ++bed_cells_;
+        const double phi_hat = setup.phi_hat0(b.x, b.z);
+        if (!(phi_hat >= 0.0 && phi_hat <= 1.0))
+            throw std::invalid_argument("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " +
+                                        format_number(b.x) + ", z = " + format_number(b.z) + " outside [0, 1]");
+        frozen_.Phi[c] = setup.Phi;
+        phi_[c] = phi_hat * setup.Phi;
+        const Eigen::Matrix3d grad_rel = cell_tensor(fields_.grad_rel, c);
+        const SegregationDirection dir = segregation_direction(grad_rel, cell_vector(fields_.u_rel, c), planar);
+        const Eigen::Vector3d d_s = dir.d_s.dot(flow_.normal()) < 0.0 ? Eigen::Vector3d(-dir.d_s) : dir.d_s;
+        T_[c] = steady_shear_temperature(setup.material, shear_rate(grad_rel));  // (eq. 45)
+        const Eigen::Vector3d a = segregation_velocity(setup.S, T_[c], d_s, gravity);  // (eq. 46)
+        frozen_.a[0][c] = a(0), frozen_.a[2][c] = a(2);
+        ds_x_[c] = d_s(0), ds_z_[c] = d_s(2);
+    });
     dt_bulk_ = granseg::bulk_time_step(g, frozen_.Phi, fields_.M, setup.bulk_cfl);
     dt_segregation_ = solver_.time_step(frozen_);
     dt_max_ = std::min(dt_bulk_, dt_segregation_);

@@ -21,7 +21,7 @@
 #include "closures/material.hpp"
 #include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 #include "tumbler/kinematic_flow.hpp"
 
 #include <functional>

@@ -9,26 +9,15 @@
 
 namespace granseg {
 
-namespace {
-
-/// Calls visit(c, r) for every bed cell (inside, Phi > bed_level), r its centre's distance from the origin.
-template <class Visit>
-void for_each_bed_cell(const Grid& grid, const std::vector<double>& Phi, double bed_level, Visit&& visit) {
-    for (int k = 0; k < grid.n[2]; ++k)
-        for (int i = 0; i < grid.n[0]; ++i) {
-            const std::size_t c = grid.index(i, 0, k);
-            if (grid.is_inside(c) && Phi[c] > bed_level) visit(c, std::hypot(grid.center(0, i), grid.center(2, k)));
-        }
-}
-
-}  // namespace
-
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial) {
     double small[3] = {0, 0, 0}, all[3] = {0, 0, 0}, bed_small = 0, bed_all = 0, sum = 0, sum2 = 0;
     long count = 0;
     PatternMetrics m;
-    for_each_bed_cell(grid, Phi, regions.bed_level, [&](std::size_t c, double r) {
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        if (!(Phi[c] > regions.bed_level)) return;
+        const double r = std::hypot(b.x, b.z);  // distance from the drum centre
         const int region = r < regions.r_core ? 0 : r < regions.r_ring ? 1 : r >= regions.r_periphery ? 2 : -1;
         const double phi_hat = composition(phi[c], Phi[c]);
         if (region >= 0) small[region] += phi[c], all[region] += Phi[c];
@@ -38,7 +27,9 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         ++count;
     });
     const double mean = sum / count;
-    for_each_bed_cell(grid, Phi, regions.bed_level, [&](std::size_t c, double) { sum2 += std::pow(composition(phi[c], Phi[c]) - mean, 2); });  // two passes: no cancellation
+    for_each_bed_cell(grid, [&](const BedCell& b) {  // two passes: no cancellation
+        if (Phi[b.c] > regions.bed_level) sum2 += std::pow(composition(phi[b.c], Phi[b.c]) - mean, 2);
+    });
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const auto fraction = [&](int region) { return all[region] > 0.0 ? small[region] / all[region] : nan; };
     m.core = fraction(0), m.ring = fraction(1), m.periphery = fraction(2);
@@ -62,7 +53,10 @@ ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, con
     std::vector<double> r_sum(shells, 0.0), small(shells, 0.0), all(shells, 0.0);
     ShellProfile p;
     p.cells.assign(shells, 0);
-    for_each_bed_cell(grid, Phi, bed_level, [&](std::size_t c, double r) {
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        if (!(Phi[c] > bed_level)) return;
+        const double r = std::hypot(b.x, b.z);
         const int s = std::min(shells - 1, static_cast<int>(r / radius * shells));
         r_sum[s] += r, small[s] += phi[c], all[s] += Phi[c], ++p.cells[s];
     });

@@ -31,14 +31,11 @@ DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat
                             const std::function<bool(std::size_t)>& bed, const InertialPosition& where) {
     DataTable cells({"x", "z", "phi_hat"});
     cells.comment(what + " (bed cells, inertial frame, m; cell size " + format_number(grid.h[0]) + " m)");
-    for (int k = 0; k < grid.n[2]; ++k)
-        for (int i = 0; i < grid.n[0]; ++i) {
-            const std::size_t c = grid.index(i, 0, k);
-            if (!grid.is_inside(c) || (bed && !bed(c))) continue;
-            const std::array<double, 2> xz = where ? where(grid.center(0, i), grid.center(2, k))
-                                                   : std::array<double, 2>{grid.center(0, i), grid.center(2, k)};
-            cells.row({xz[0], xz[1], phi_hat[c]});
-        }
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        if (bed && !bed(b.c)) return;
+        const std::array<double, 2> xz = where ? where(b.x, b.z) : std::array<double, 2>{b.x, b.z};
+        cells.row({xz[0], xz[1], phi_hat[b.c]});
+    });
     return cells;
 }
 
@@ -48,13 +45,11 @@ DataTable tumbler_flow_cells(const KinematicTumbler& tumbler) {
     DataTable cells({"x", "z", "in_layer", "ux", "uz", "ds_x", "ds_z", "T", "a_x", "a_z"});
     cells.comment("bed cells: inertial velocity (m/s), d_s (out of the bed; 0 in the core), T (m^2/s^2, eq. 45), "
                   "a_k = (S^sl)_k (m/s, eq. 46)");
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c)) continue;
-            cells.row({g.center(0, i), g.center(2, k), double(f.in_layer[c]), f.u[0][c], f.u[2][c], tumbler.ds_x()[c],
-                       tumbler.ds_z()[c], tumbler.T()[c], tumbler.frozen().a[0][c], tumbler.frozen().a[2][c]});
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        cells.row({b.x, b.z, double(f.in_layer[c]), f.u[0][c], f.u[2][c], tumbler.ds_x()[c], tumbler.ds_z()[c],
+                   tumbler.T()[c], tumbler.frozen().a[0][c], tumbler.frozen().a[2][c]});
+    });
     return cells;
 }
 

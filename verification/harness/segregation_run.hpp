@@ -5,7 +5,7 @@
 #pragma once
 
 #include "segregation/column.hpp"
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 
 #include <functional>
 #include <string>

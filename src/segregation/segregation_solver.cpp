@@ -1,4 +1,4 @@
-#include "segregation/segregation_step.hpp"
+#include "segregation/segregation_solver.hpp"
 
 #include "core/format.hpp"
 #include "segregation/face_fluxes.hpp"
