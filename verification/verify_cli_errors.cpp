@@ -194,6 +194,23 @@ int main(int argc, char** argv) {
         {"tumbler-kinematic, rotation_rate = 0", tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"},
         {"tumbler-kinematic, unknown bulk scheme", tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"},
     };
+    // The coupled drum (issue 11, check g).
+    const std::string coupled = "[scene]\nkind = \"tumbler\"\n[output]\ndir = \"" + out.string() + "\"\n[run]\nt_end = 1\nangle_from = 0\n";
+    const std::vector<std::pair<std::string, std::string>> coupled_drums = {
+        {"tumbler, phi_hat > 1 on part of the bed", coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"},
+        {"tumbler, phi_hat < 0 at the bottom", coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"},
+        {"tumbler, S < 0", coupled + "[segregation]\nS = -1\n"},
+        {"tumbler, unknown key", coupled + "[coupling]\nfeedback = true\n"},
+        {"tumbler, [flow] phi_hat (the mixture comes from [initial])", coupled + "[flow]\nphi_hat = 0.5\n"},
+        {"tumbler, cells too coarse for the flowing layer", coupled + "[drum]\ncells_per_diameter = 16\n"},
+        {"tumbler, classic scheme", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"},
+        {"tumbler, Phi_min = 1", coupled + "[segregation]\nPhi_min = 1\n"},
+    };
+    for (const auto& [label, text] : coupled_drums) {
+        const fs::path file = work / "scene.toml";
+        std::ofstream(file) << text;
+        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
+    }
     for (const auto& [label, text] : tumblers) {
         const fs::path file = work / "scene.toml";
         std::ofstream(file) << text;
@@ -249,6 +266,14 @@ int main(int argc, char** argv) {
     const Outcome tumbler_ran = cli.run("run '" + good_tumbler.string() + "'");
     t.count("run, valid tumbler-kinematic scene: exit status", tumbler_ran.status, 0);
     t.count("run, valid tumbler-kinematic scene: tumbler_metrics.dat written", fs::exists(out / "tumbler_metrics.dat"), 1);
+    const fs::path good_coupled = work / "good_coupled.toml";
+    std::ofstream(good_coupled) << coupled.substr(0, coupled.find("[run]")) << "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n";
+    const Outcome coupled_ran = cli.run("run '" + good_coupled.string() + "'");
+    t.count("run, valid tumbler scene: exit status", coupled_ran.status, 0);
+    long coupled_files = 0;
+    for (const char* name : {"history.dat", "summary.dat", "initial_lab.dat", "fields_lab.dat", "frames/frame_002.dat", "vtk/tumbler_0000.vtk"})
+        coupled_files += fs::exists(out / name);
+    t.count("run, valid tumbler scene: history, summary, fields, frames, VTK written", coupled_files, 6);
     const Outcome closures = cli.run("closures --Phi 0.59 --phi-hat 0.4 --T 1e-4");
     t.count("closures, valid state: exit status", closures.status, 0);
     long missing = 0;
