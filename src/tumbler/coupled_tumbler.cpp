@@ -8,12 +8,17 @@
 #include "segregation/reconstruction.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace granseg {
 
 namespace {
+
+double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
 
 /// The flow settings with the initial mixture as the uniform phi_hat.
 FlowSettings with_mixture(FlowSettings settings, double mixture) {
@@ -79,14 +84,23 @@ std::vector<double> CoupledTumbler::phi_hat() const {
 }
 
 double CoupledTumbler::step(double t_end) {
+    using clock = std::chrono::steady_clock;
+    auto t0 = clock::now();
     const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)
+    auto t1 = clock::now();
+    timers_.flow += seconds(t0, t1);
     const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
     bulk_courant_ += bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, phi_, setup_.Phi_min);  // 2. (eq. 65, F^bulk)
     clip_bulk_round_off();
+    t0 = clock::now();
+    timers_.bulk += seconds(t1, t0);
     since_segregation_ += dt;  // (assumption C1)
     if (since_segregation_ >= segregation_step_ || bulk_courant_ >= setup_.bulk_cfl || flow_.time() >= t_end)
         segregate();  // 3. (eqs. 46, 47, 52b)
+    t1 = clock::now();
+    timers_.segregation += seconds(t0, t1);
     if (setup_.packing_feedback) flow_.set_phi_hat(phi_hat());  // 4. (eqs. 18, 19)
+    timers_.feedback += seconds(t1, clock::now());
     return dt;
 }
 

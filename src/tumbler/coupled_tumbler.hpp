@@ -57,6 +57,11 @@ struct CoupledTumblerSetup {
     std::function<double(double x, double z)> phi_hat0 = [](double, double) { return 0.5; };  // lab frame at t = 0
 };
 
+/// Wall-clock seconds spent in the parts of the coupled step (for benchmarks).
+struct CoupledTimers {
+    double flow = 0, bulk = 0, segregation = 0, feedback = 0;  // steps 1, 2, 3, 4
+};
+
 class CoupledTumbler {
 public:
     /// The drum at rest with the bed of the initial mixture (assumptions F6, C3) and
@@ -94,6 +99,7 @@ public:
     double max_excess() const { return max_excess_; }
     double min_phi() const { return min_phi_; }
     double largest_bulk_clip() const { return largest_bulk_clip_; }
+    const CoupledTimers& timers() const { return timers_; }
 
 private:
     /// a = S^sl and d_s per cell from the flow's current fields (step 3).
@@ -126,6 +132,7 @@ private:
     long substeps_ = 0, segregation_steps_ = 0;
     double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
     double largest_bulk_clip_ = 0.0;
+    CoupledTimers timers_;
 };
 
 }  // namespace granseg
