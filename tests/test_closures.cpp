@@ -62,9 +62,9 @@ BOOST_AUTO_TEST_CASE(material_section_overrides_and_validates) {
 }
 
 BOOST_AUTO_TEST_CASE(packing_table_parser_rejects_bad_rows) {
-    BOOST_CHECK_THROW(parse_packing_table("# x y z\n0 0.6 0.5\n", "p.dat"), std::invalid_argument);
-    BOOST_CHECK_THROW(parse_packing_table("# phi_hat Phi_rcp Phi_co\n0 0.5 0.6\n", "p.dat"), std::invalid_argument);
-    BOOST_CHECK_THROW(parse_packing_table("# phi_hat Phi_rcp Phi_co\n0 0.6\n", "p.dat"), std::invalid_argument);
+    BOOST_CHECK_THROW(parse_packing_table("# x y z\n0 0.6 0.5\n", "p.dat"), InputError);
+    BOOST_CHECK_THROW(parse_packing_table("# phi_hat Phi_rcp Phi_co\n0 0.5 0.6\n", "p.dat"), InputError);
+    BOOST_CHECK_THROW(parse_packing_table("# phi_hat Phi_rcp Phi_co\n0 0.6\n", "p.dat"), InputError);
     const PackingTable t = builtin_packing_table();
     BOOST_TEST(t.phi_hat.size() == 21u);
     BOOST_TEST(!t.comments.empty());  // the file names its source

@@ -1,12 +1,13 @@
 // muparser expressions: evaluation, variables, and the errors users see.
+#include "core/error.hpp"
 #include "core/expression.hpp"
 
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <stdexcept>
 
 using granseg::Expression;
+using granseg::InputError;
 
 BOOST_AUTO_TEST_SUITE(expression)
 
@@ -28,7 +29,7 @@ BOOST_AUTO_TEST_CASE(unknown_variable_is_named) {
     try {
         Expression("z + y", {"z"});
         BOOST_FAIL("no exception");
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         BOOST_TEST(std::string(e.what()).find("unknown variable \"y\"") != std::string::npos);
     }
 }
@@ -37,18 +38,18 @@ BOOST_AUTO_TEST_CASE(syntax_error_is_one_line) {
     try {
         Expression("0.6 - *z", {"z"});
         BOOST_FAIL("no exception");
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         const std::string what = e.what();
         BOOST_TEST(what.find("malformed expression") != std::string::npos);
         BOOST_TEST(what.find('\n') == std::string::npos);
     }
-    BOOST_CHECK_THROW(Expression("sin(", {"z"}), std::invalid_argument);
-    BOOST_CHECK_THROW(Expression("", {"z"}), std::invalid_argument);
+    BOOST_CHECK_THROW(Expression("sin(", {"z"}), InputError);
+    BOOST_CHECK_THROW(Expression("", {"z"}), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(wrong_number_of_values_throws) {
     const Expression e("z", {"z"});
-    BOOST_CHECK_THROW(e({1.0, 2.0}), std::invalid_argument);
+    BOOST_CHECK_THROW(e({1.0, 2.0}), InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,11 +1,11 @@
 // The kinematic rolling-drum flow at hand-checked points (the systematic checks are
 // verification/verify_kinematic_flow.cpp).
+#include "core/error.hpp"
 #include "tumbler/kinematic_flow.hpp"
 
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <stdexcept>
 
 using namespace granseg;
 using Eigen::Vector3d;
@@ -27,13 +27,13 @@ BOOST_AUTO_TEST_CASE(geometry_of_the_sect_4_2_drum) {
 BOOST_AUTO_TEST_CASE(invalid_parameters_are_rejected) {
     RollingDrumParameters p;
     p.layer_thickness = 0.05;  // thicker than the half chord
-    BOOST_CHECK_THROW(RollingDrumFlow{p}, std::invalid_argument);
+    BOOST_CHECK_THROW(RollingDrumFlow{p}, InputError);
     p = RollingDrumParameters{};
     p.rotation_rate = 0.0;
-    BOOST_CHECK_THROW(RollingDrumFlow{p}, std::invalid_argument);
+    BOOST_CHECK_THROW(RollingDrumFlow{p}, InputError);
     p = RollingDrumParameters{};
     p.fill_fraction = 1.0;
-    BOOST_CHECK_THROW(RollingDrumFlow{p}, std::invalid_argument);
+    BOOST_CHECK_THROW(RollingDrumFlow{p}, InputError);
 }
 
 BOOST_AUTO_TEST_CASE(stream_function_vanishes_on_wall_and_surface) {

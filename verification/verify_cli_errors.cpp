@@ -1,8 +1,10 @@
 // End-to-end check of bad input handling: runs build/granseg on bad scene files and bad
-// arguments and checks, for each, exit status 2, exactly one line on stderr, nothing on stdout
-// and no output file; then checks that good input works, and that `granseg riemann` prints the
-// case, region, flux, waves and samples of the library's exact solution (one state per Table 1
-// case and coefficient family, verification/table1/table1_states.hpp).
+// arguments and checks, for each, exit status 2, exactly one line on stderr (for a scene file:
+// starting with the file and naming the section and key), nothing on stdout and no output file;
+// then checks that good input works, and that `granseg riemann` prints the case, region, flux,
+// waves and samples of the library's exact solution (one state per Table 1 case and coefficient
+// family, verification/table1/table1_states.hpp). The command lines are one table, cli_cases():
+// a new case is one row.
 //
 // Run: build/verification/verify_cli_errors [--data DIR]   (about a second; finds the CLI next
 // to its own directory, build/granseg)
@@ -19,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,13 +78,184 @@ private:
 };
 
 /// A bad input must give exit status 2, one stderr line, empty stdout, and write no file.
-void expect_rejected(CheckTable& t, const Cli& cli, const std::string& label, const std::string& arguments,
-                     const fs::path& output_dir) {
-    const Outcome o = cli.run(arguments);
+void expect_rejected(CheckTable& t, const std::string& label, const Outcome& o, const fs::path& output_dir) {
     t.count(label + ": exit status", o.status, 2);
     t.count(label + ": stderr lines + stdout lines", lines(o.err) + lines(o.out), 1);
     t.count(label + ": files written", files_below(output_dir), 0);
     t.note("  stderr: " + o.err.substr(0, o.err.find('\n')));
+}
+
+/// Checks the outcome of a good command line (its output directory is `out`).
+using Check = std::function<void(CheckTable& t, const std::string& label, const Outcome& o, const fs::path& out)>;
+
+/// One command line and what it must do.
+struct Case {
+    std::string label;
+    std::string arguments;  // the words after `granseg`; SCENE stands for the path of the scene file
+    std::string scene;      // the text of that scene file (empty: the case has none)
+    Check check;            // empty: the input must be rejected (expect_rejected)
+    std::string names;      // a rejection's message must start with "SCENE: " and this ("[section] key:")
+};
+
+Case bad_scene(const std::string& label, const std::string& names, const std::string& scene) {
+    return {"run, " + label, "run SCENE", scene, {}, names};
+}
+Case bad_arguments(const std::string& label, const std::string& arguments) { return {label, arguments, "", {}, ""}; }
+
+/// A good run: exit status 0 and what `also` checks.
+Case good(const std::string& label, const std::string& arguments, const std::string& scene, const Check& also) {
+    return {label, arguments, scene,
+            [also](CheckTable& t, const std::string& l, const Outcome& o, const fs::path& out) {
+                t.count(l + ": exit status", o.status, 0);
+                also(t, l, o, out);
+            },
+            ""};
+}
+
+/// Passes if every one of `lines` appears as a whole line of the output.
+Check prints(const std::vector<std::string>& wanted) {
+    return [wanted](CheckTable& t, const std::string& label, const Outcome& o, const fs::path&) {
+        long missing = 0;
+        for (const std::string& w : wanted) missing += ("\n" + o.out).find("\n" + w + "\n") == std::string::npos;
+        t.count(label + ": of " + std::to_string(wanted.size()) + " expected lines, missing", missing, 0);
+    };
+}
+
+/// The table of command lines: bad scene files and arguments of every command, then good ones.
+std::vector<Case> cli_cases(const fs::path& out) {
+    const std::string dir = "[output]\ndir = \"" + out.string() + "\"\n";
+    const std::string sweep = "[scene]\nkind = \"closure-sweep\"\n" + dir;
+    // Segregation column (issue 4): the acceptance cases and the grid-wide conditions.
+    const std::string column = "[scene]\nkind = \"segregation1d\"\n" + dir + "[grid]\ncells = 50\n[time]\nend = 0.75\n";
+    const std::string profiles = "Phi = \"0.62 - 0.08*cos(_pi*z)^2\"\nT = \"0.2 + 0.8*z\"\n";
+    // Kinematic tumbler (issue 5): acceptance cases and the conditions between keys.
+    const std::string tumbler = "[scene]\nkind = \"tumbler-kinematic\"\n" + dir;
+    // The coupled drum (issue 11, check g).
+    const std::string coupled = "[scene]\nkind = \"tumbler\"\n" + dir + "[run]\nt_end = 1\nangle_from = 0\n";
+    const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
+    const std::string closures = "closures --Phi 0.59 --phi-hat 0.4 --T 1e-4";
+    return {
+        bad_scene("tumbler-kinematic, fill_fraction = 1.2", "[drum] fill_fraction:",
+                  tumbler + "[drum]\nfill_fraction = 1.2\n[time]\nend = 1\n"),
+        bad_scene("tumbler-kinematic, negative end time", "[time] end:",
+                  tumbler + "[time]\nend = -1\n"),
+        bad_scene("tumbler-kinematic, unknown key", "[drum] rotation_speed:",
+                  tumbler + "[time]\nend = 1\n[drum]\nrotation_speed = 0.1\n"),
+        bad_scene("tumbler-kinematic, layer thicker than the bed allows", "[drum] layer_thickness:",
+                  tumbler + "[time]\nend = 1\n[drum]\nlayer_thickness = 0.05\n"),
+        bad_scene("tumbler-kinematic, layer thinner than a cell", "[drum] cells_per_diameter:",
+                  tumbler + "[time]\nend = 1\n[drum]\ncells_per_diameter = 10\n"),
+        bad_scene("tumbler-kinematic, phi_hat > 1 on part of the bed", "[initial] phi_hat:",
+                  tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
+        bad_scene("tumbler-kinematic, classic scheme", "[segregation] scheme:",
+                  tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"),
+        bad_scene("tumbler-kinematic, Rusanov scheme (unbounded row)", "[segregation] scheme:",
+                  tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"rusanov\"\n"),
+        bad_scene("tumbler-kinematic, rotation_rate = 0", "[drum] rotation_rate:",
+                  tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"),
+        bad_scene("tumbler-kinematic, unknown bulk scheme", "[bulk] scheme:",
+                  tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"),
+        bad_scene("tumbler, phi_hat > 1 on part of the bed", "[initial] phi_hat:",
+                  coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
+        bad_scene("tumbler, phi_hat < 0 at the bottom", "[initial] phi_hat:",
+                  coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"),
+        bad_scene("tumbler, S < 0", "[segregation] S:", coupled + "[segregation]\nS = -1\n"),
+        bad_scene("tumbler, unknown key", "[coupling] feedback:", coupled + "[coupling]\nfeedback = true\n"),
+        bad_scene("tumbler, [flow] phi_hat (the mixture comes from [initial])", "[flow] phi_hat:",
+                  coupled + "[flow]\nphi_hat = 0.5\n"),
+        bad_scene("tumbler, cells too coarse for the flowing layer", "[drum] cells_per_diameter:",
+                  coupled + "[drum]\ncells_per_diameter = 16\n"),
+        bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),
+        bad_scene("tumbler, Phi_min = 1", "[segregation] Phi_min:", coupled + "[segregation]\nPhi_min = 1\n"),
+        bad_scene("segregation1d, phi = Phi + 0.01", "[initial] phi:",
+                  column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"),
+        bad_scene("segregation1d, cfl = 1.5", "[time] cfl:",
+                  column + "cfl = 1.5\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"),
+        bad_scene("segregation1d, T < 0 on part of the grid", "[initial] T:",
+                  column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"),
+        bad_scene("segregation1d, Phi >= 1 on part of the grid", "[initial] Phi:",
+                  column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"),
+        bad_scene("segregation1d, classic scheme, T < 0 at a face only", "[initial] T:",
+                  column + "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"),
+        bad_scene("segregation1d, unknown scheme", "[segregation] scheme:",
+                  column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"),
+        bad_scene("unknown key", "[sweep] pionts:",
+                  sweep + "[sweep]\nPhi_max = 0.6\npionts = 10\n"),
+        bad_scene("string where a number belongs", "[sweep] Phi_max:",
+                  sweep + "[sweep]\nPhi_max = \"0.6\"\n"),
+        bad_scene("unknown scene kind", "[scene] kind:",
+                  "[scene]\nkind = \"tumbler-magic\"\n" + dir),
+        bad_scene("out-of-range value (Phi_max >= Phi_rcp)", "[sweep] Phi_max:",
+                  sweep + "[sweep]\nPhi_max = 0.7\n"),
+        bad_scene("negative T from an expression", "[sweep] T:",
+                  sweep + "[sweep]\nPhi_max = 0.6\nT = \"0.3 - Phi\"\n"),
+        bad_scene("malformed expression", "[sweep] T:",
+                  sweep + "[sweep]\nPhi_max = 0.6\nT = \"1e-4 * (Phi\"\n"),
+        bad_scene("unknown section", "[materail]:",
+                  sweep + "[sweep]\nPhi_max = 0.6\n[materail]\neta0 = 1e-4\n"),
+        bad_scene("unknown compressibility law", "[material] g_law:",
+                  sweep + "[sweep]\nPhi_max = 0.6\n[material]\ng_law = \"carnahan\"\n"),
+        bad_scene("TOML syntax error", "TOML syntax error",
+                  sweep + "[sweep]\nPhi_max = 0.6 0.7\n"),
+        bad_arguments("run, missing scene file", "run '" + (out / "absent.toml").string() + "'"),
+        {"run, output directory that cannot be created", "run SCENE --output-dir /proc/granseg-out", sweep + "[sweep]\nPhi_max = 0.6\n", {}, ""},
+        bad_arguments("closures, non-numeric --Phi", "closures --Phi abc --phi-hat 0.4 --T 1e-4"),
+        bad_arguments("closures, --Phi >= Phi_rcp", "closures --Phi 0.7 --phi-hat 0.4 --T 1e-4"),
+        bad_arguments("closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1"),
+        bad_arguments("closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4"),
+        {"closures, unknown g_law in --scene", closures + " --scene SCENE", "[material]\ng_law = \"carnahan\"\n", {}, "[material] g_law:"},
+        bad_arguments("unknown command", "segregate"),
+        bad_arguments("riemann, phi_L > Phi_L", "riemann 0.6 0.5 0.3 0.8"),
+        bad_arguments("riemann, Phi_R = 1", "riemann 0.1 0.5 0.3 1"),
+        bad_arguments("riemann, Phi_L = 0", "riemann 0 0 0.3 0.8"),
+        bad_arguments("riemann, negative phi_R", "riemann 0.1 0.5 -0.1 0.8"),
+        bad_arguments("riemann, negative --TR", "riemann 0.1 0.5 0.3 0.8 --TR -1"),
+        bad_arguments("riemann, non-numeric PHI_R", "riemann 0.1 0.5 0.3 abc"),
+        bad_arguments("riemann, missing PHI_R", "riemann 0.1 0.5 0.3"),
+        bad_arguments("riemann, --sample 0", "riemann 0.1 0.5 0.3 0.8 --sample 0"),
+        bad_arguments("direction, non-numeric --grad", "direction --grad '0 0 x 0 0 0 0 0 0' --u '1 0 0'"),
+        bad_arguments("direction, 8 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0' --u '1 0 0'"),
+        bad_arguments("direction, 10 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0 0 0' --u '1 0 0'"),
+        bad_arguments("direction, 2 numbers in --u", "direction " + shear + " --u '1 0'"),
+        bad_arguments("direction, nan in --u", "direction " + shear + " --u '1 nan 0'"),
+        bad_arguments("direction, missing --u", "direction " + shear),
+        // Good input: each scene writes its files, each command prints what the issues ask for.
+        good("run, valid closure-sweep scene", "run SCENE", sweep + "[sweep]\nPhi_max = 0.6\npoints = 5\n",
+             [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
+                 t.count(l + ": files written", files_below(o), 1);
+             }),
+        good("run, valid segregation1d scene", "run SCENE", column + "[initial]\n" + profiles + "phi = \"Phi/2\"\n",
+             [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
+                 std::ifstream profile(o / "profile.dat");
+                 std::string first_line;
+                 std::getline(profile, first_line);
+                 t.count(l + ": first line is '# z Phi T phi'", first_line == "# z Phi T phi", 1);
+             }),
+        good("run, valid tumbler-kinematic scene", "run SCENE",
+             tumbler + "[drum]\ncells_per_diameter = 20\nlayer_thickness = 0.01\n[time]\nend = 0.5\n",
+             [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
+                 t.count(l + ": tumbler_metrics.dat written", fs::exists(o / "tumbler_metrics.dat"), 1);
+             }),
+        good("run, valid tumbler scene", "run SCENE",
+             "[scene]\nkind = \"tumbler\"\n" + dir + "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n",
+             [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
+                 long written = 0;
+                 for (const char* name : {"history.dat", "summary.dat", "initial_lab.dat", "fields_lab.dat",
+                                          "frames/frame_002.dat", "vtk/tumbler_0000.vtk"})
+                     written += fs::exists(o / name);
+                 t.count(l + ": history, summary, fields, frames, VTK written", written, 6);
+             }),
+        good("closures, valid state", closures, "",
+             [](CheckTable& t, const std::string& l, const Outcome& o, const fs::path&) {
+                 long missing = 0;
+                 for (const char* name : {"g", "Phi_rcp", "Phi_co", "p_k", "p_y", "p", "eta", "lambda", "eps"})
+                     missing += o.out.find("\n" + std::string(name) + " = ") == std::string::npos;
+                 t.count(l + ": required quantities missing", missing, 0);
+             }),
+        good("direction, simple shear", "direction " + shear + " --u '-1.3 0 0'", "",
+             prints({"status = ok", "d_s = 0 0 1", "gamma_dot = 2.385"})),
+        good("direction, rigid rotation", "direction --grad '0 -1 0 1 0 0 0 0 0' --u '1 0 0'", "", prints({"status = no_shear"})),
+    };
 }
 
 /// The values of the `name = value` lines called `name`, in order.
@@ -150,146 +324,26 @@ int main(int argc, char** argv) {
     const fs::path cli_path = fs::absolute(fs::path(argv[0])).parent_path().parent_path() / "granseg";
     const fs::path work = fs::temp_directory_path() / ("granseg_verify_cli_" + std::to_string(::getpid()));
     fs::create_directories(work);
-    const fs::path out = work / "out";
+    const fs::path out = work / "out", scene = work / "scene.toml";
     const Cli cli(cli_path, work);
     CheckTable t("CLI input validation (granseg run, closures, riemann, direction) and riemann output");
-
-    const std::string head = "[scene]\nkind = \"closure-sweep\"\n[output]\ndir = \"" + out.string() + "\"\n";
-    const std::vector<std::pair<std::string, std::string>> scenes = {
-        {"unknown key", head + "[sweep]\nPhi_max = 0.6\npionts = 10\n"},
-        {"string where a number belongs", head + "[sweep]\nPhi_max = \"0.6\"\n"},
-        {"unknown scene kind", "[scene]\nkind = \"tumbler-magic\"\n[output]\ndir = \"" + out.string() + "\"\n"},
-        {"out-of-range value (Phi_max >= Phi_rcp)", head + "[sweep]\nPhi_max = 0.7\n"},
-        {"negative T from an expression", head + "[sweep]\nPhi_max = 0.6\nT = \"0.3 - Phi\"\n"},
-        {"malformed expression", head + "[sweep]\nPhi_max = 0.6\nT = \"1e-4 * (Phi\"\n"},
-        {"unknown section", head + "[sweep]\nPhi_max = 0.6\n[materail]\neta0 = 1e-4\n"},
-        {"TOML syntax error", head + "[sweep]\nPhi_max = 0.6 0.7\n"},
-    };
-    // Segregation column (issue 4): the acceptance cases and the grid-wide conditions.
-    const std::string column = "[scene]\nkind = \"segregation1d\"\n[output]\ndir = \"" + out.string() +
-                               "\"\n[grid]\ncells = 50\n[time]\nend = 0.75\n";
-    const std::string profiles = "Phi = \"0.62 - 0.08*cos(_pi*z)^2\"\nT = \"0.2 + 0.8*z\"\n";
-    const std::vector<std::pair<std::string, std::string>> columns = {
-        {"segregation1d, phi = Phi + 0.01", column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"},
-        {"segregation1d, cfl = 1.5", column + "cfl = 1.5\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
-        {"segregation1d, T < 0 on part of the grid",
-         column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"},
-        {"segregation1d, Phi >= 1 on part of the grid",
-         column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"},
-        {"segregation1d, classic scheme, T < 0 at a face only",
-         column + "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"},
-        {"segregation1d, unknown scheme",
-         column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"},
-    };
-    // Kinematic tumbler (issue 5): acceptance cases and the conditions between keys.
-    const std::string tumbler = "[scene]\nkind = \"tumbler-kinematic\"\n[output]\ndir = \"" + out.string() + "\"\n";
-    const std::vector<std::pair<std::string, std::string>> tumblers = {
-        {"tumbler-kinematic, fill_fraction = 1.2", tumbler + "[drum]\nfill_fraction = 1.2\n[time]\nend = 1\n"},
-        {"tumbler-kinematic, negative end time", tumbler + "[time]\nend = -1\n"},
-        {"tumbler-kinematic, unknown key", tumbler + "[time]\nend = 1\n[drum]\nrotation_speed = 0.1\n"},
-        {"tumbler-kinematic, layer thicker than the bed allows", tumbler + "[time]\nend = 1\n[drum]\nlayer_thickness = 0.05\n"},
-        {"tumbler-kinematic, layer thinner than a cell", tumbler + "[time]\nend = 1\n[drum]\ncells_per_diameter = 10\n"},
-        {"tumbler-kinematic, phi_hat > 1 on part of the bed", tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"},
-        {"tumbler-kinematic, classic scheme", tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"},
-        {"tumbler-kinematic, rotation_rate = 0", tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"},
-        {"tumbler-kinematic, unknown bulk scheme", tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"},
-    };
-    // The coupled drum (issue 11, check g).
-    const std::string coupled = "[scene]\nkind = \"tumbler\"\n[output]\ndir = \"" + out.string() + "\"\n[run]\nt_end = 1\nangle_from = 0\n";
-    const std::vector<std::pair<std::string, std::string>> coupled_drums = {
-        {"tumbler, phi_hat > 1 on part of the bed", coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"},
-        {"tumbler, phi_hat < 0 at the bottom", coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"},
-        {"tumbler, S < 0", coupled + "[segregation]\nS = -1\n"},
-        {"tumbler, unknown key", coupled + "[coupling]\nfeedback = true\n"},
-        {"tumbler, [flow] phi_hat (the mixture comes from [initial])", coupled + "[flow]\nphi_hat = 0.5\n"},
-        {"tumbler, cells too coarse for the flowing layer", coupled + "[drum]\ncells_per_diameter = 16\n"},
-        {"tumbler, classic scheme", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"},
-        {"tumbler, Phi_min = 1", coupled + "[segregation]\nPhi_min = 1\n"},
-    };
-    for (const auto& [label, text] : coupled_drums) {
-        const fs::path file = work / "scene.toml";
-        std::ofstream(file) << text;
-        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
+    for (const Case& c : cli_cases(out)) {
+        fs::remove_all(out);
+        std::string arguments = c.arguments;
+        if (!c.scene.empty()) {
+            std::ofstream(scene) << c.scene;
+            arguments.replace(arguments.find("SCENE"), 5, "'" + scene.string() + "'");
+        }
+        const Outcome o = cli.run(arguments);
+        if (c.check) {
+            c.check(t, c.label, o, out);
+            continue;
+        }
+        expect_rejected(t, c.label, o, out);
+        if (!c.names.empty())
+            t.count(c.label + ": message starts with the file and names the key", o.err.rfind(scene.string() + ": " + c.names, 0) == 0, 1);
     }
-    for (const auto& [label, text] : tumblers) {
-        const fs::path file = work / "scene.toml";
-        std::ofstream(file) << text;
-        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
-    }
-    for (const auto& [label, text] : columns) {
-        const fs::path file = work / "scene.toml";
-        std::ofstream(file) << text;
-        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
-    }
-    for (const auto& [label, text] : scenes) {
-        const fs::path file = work / "scene.toml";
-        std::ofstream(file) << text;
-        expect_rejected(t, cli, "run, " + label, "run '" + file.string() + "'", out);
-    }
-    expect_rejected(t, cli, "run, missing scene file", "run '" + (work / "absent.toml").string() + "'", out);
-    expect_rejected(t, cli, "closures, non-numeric --Phi", "closures --Phi abc --phi-hat 0.4 --T 1e-4", out);
-    expect_rejected(t, cli, "closures, --Phi >= Phi_rcp", "closures --Phi 0.7 --phi-hat 0.4 --T 1e-4", out);
-    expect_rejected(t, cli, "closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1", out);
-    expect_rejected(t, cli, "closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4", out);
-    expect_rejected(t, cli, "unknown command", "segregate", out);
-    const std::vector<std::pair<std::string, std::string>> bad_riemann = {
-        {"phi_L > Phi_L", "0.6 0.5 0.3 0.8"},         {"Phi_R = 1", "0.1 0.5 0.3 1"},
-        {"Phi_L = 0", "0 0 0.3 0.8"},                 {"negative phi_R", "0.1 0.5 -0.1 0.8"},
-        {"negative --TR", "0.1 0.5 0.3 0.8 --TR -1"}, {"non-numeric PHI_R", "0.1 0.5 0.3 abc"},
-        {"missing PHI_R", "0.1 0.5 0.3"},             {"--sample 0", "0.1 0.5 0.3 0.8 --sample 0"},
-    };
-    for (const auto& [label, arguments] : bad_riemann) expect_rejected(t, cli, "riemann, " + label, "riemann " + arguments, out);
-    const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
-    expect_rejected(t, cli, "direction, non-numeric --grad", "direction --grad '0 0 x 0 0 0 0 0 0' --u '1 0 0'", out);
-    expect_rejected(t, cli, "direction, 8 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0' --u '1 0 0'", out);
-    expect_rejected(t, cli, "direction, 10 numbers in --grad", "direction --grad '0 0 1 0 0 0 0 0 0 0' --u '1 0 0'", out);
-    expect_rejected(t, cli, "direction, 2 numbers in --u", "direction " + shear + " --u '1 0'", out);
-    expect_rejected(t, cli, "direction, nan in --u", "direction " + shear + " --u '1 nan 0'", out);
-    expect_rejected(t, cli, "direction, missing --u", "direction " + shear, out);
-
-    // Good input: the scene writes its table, closures prints every quantity of the issue.
-    const fs::path good = work / "good.toml";
-    std::ofstream(good) << head << "[sweep]\nPhi_max = 0.6\npoints = 5\n";
-    const Outcome ran = cli.run("run '" + good.string() + "'");
-    t.count("run, valid scene: exit status", ran.status, 0);
-    t.count("run, valid scene: files written", files_below(out), 1);
-    const fs::path good_column = work / "good_column.toml";
-    std::ofstream(good_column) << column << "[initial]\n" << profiles << "phi = \"Phi/2\"\n";
-    const Outcome column_ran = cli.run("run '" + good_column.string() + "'");
-    t.count("run, valid segregation1d scene: exit status", column_ran.status, 0);
-    std::ifstream profile(out / "profile.dat");
-    std::string first_line;
-    std::getline(profile, first_line);
-    t.count("run, valid segregation1d scene: first line is '# z Phi T phi'", first_line == "# z Phi T phi", 1);
-    const fs::path good_tumbler = work / "good_tumbler.toml";
-    std::ofstream(good_tumbler) << tumbler << "[drum]\ncells_per_diameter = 20\nlayer_thickness = 0.01\n[time]\nend = 0.5\n";
-    const Outcome tumbler_ran = cli.run("run '" + good_tumbler.string() + "'");
-    t.count("run, valid tumbler-kinematic scene: exit status", tumbler_ran.status, 0);
-    t.count("run, valid tumbler-kinematic scene: tumbler_metrics.dat written", fs::exists(out / "tumbler_metrics.dat"), 1);
-    const fs::path good_coupled = work / "good_coupled.toml";
-    std::ofstream(good_coupled) << coupled.substr(0, coupled.find("[run]")) << "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n";
-    const Outcome coupled_ran = cli.run("run '" + good_coupled.string() + "'");
-    t.count("run, valid tumbler scene: exit status", coupled_ran.status, 0);
-    long coupled_files = 0;
-    for (const char* name : {"history.dat", "summary.dat", "initial_lab.dat", "fields_lab.dat", "frames/frame_002.dat", "vtk/tumbler_0000.vtk"})
-        coupled_files += fs::exists(out / name);
-    t.count("run, valid tumbler scene: history, summary, fields, frames, VTK written", coupled_files, 6);
-    const Outcome closures = cli.run("closures --Phi 0.59 --phi-hat 0.4 --T 1e-4");
-    t.count("closures, valid state: exit status", closures.status, 0);
-    long missing = 0;
-    for (const char* name : {"g", "Phi_rcp", "Phi_co", "p_k", "p_y", "p", "eta", "lambda", "eps"})
-        if (closures.out.find("\n" + std::string(name) + " = ") == std::string::npos) ++missing;
-    t.count("closures, valid state: required quantities missing", missing, 0);
     check_riemann_agreement(t, cli);
-    const Outcome direction = cli.run("direction " + shear + " --u '-1.3 0 0'");
-    t.count("direction, simple shear: exit status", direction.status, 0);
-    t.count("direction, simple shear: 'status = ok' and 'd_s = 0 0 1' lines",
-            (direction.out.find("status = ok\n") != std::string::npos) + (direction.out.find("\nd_s = 0 0 1\n") != std::string::npos), 2);
-    t.count("direction, simple shear: 'gamma_dot = 2.385' line", direction.out.find("\ngamma_dot = 2.385\n") != std::string::npos, 1);
-    const Outcome rigid = cli.run("direction --grad '0 -1 0 1 0 0 0 0 0' --u '1 0 0'");
-    t.count("direction, rigid rotation: exit status", rigid.status, 0);
-    t.count("direction, rigid rotation: 'status = no_shear' line", rigid.out.find("status = no_shear\n") == 0, 1);
-
     fs::remove_all(work);
     return t.finish();
 }

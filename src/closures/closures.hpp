@@ -1,5 +1,10 @@
 // Closures of the Latz-Schmidt granular flow model (Sect. 2.1, eqs. 15-20).
 //
+//   solves      eqs. (15)-(20) at one state (algebraic: nothing over time)
+//   inputs      the Material, Phi, phi_hat, T
+//   outputs     ClosureValues: Phi_rcp, Phi_co, g, p_k, p_y, p, eta, lambda, eps, the dissipation, c^2
+//   invariants  no 0/0 for any T >= 0; g -> 1 as Phi -> 0, g = +inf at Phi >= Phi_rcp (verify_closures)
+//
 // Symbols (docs/notation.md): Phi granular volume fraction, phi_hat = phi/Phi small-particle
 // share, T granular temperature, g compressibility factor, p = p_k + p_y pressure, eta viscosity,
 // lambda conductivity, eps dissipation rate. With s = Theta(Phi - Phi_co) the yield factor (eq. 20)

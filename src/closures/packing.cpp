@@ -1,13 +1,13 @@
 #include "closures/packing.hpp"
 
 #include "core/embedded.hpp"
+#include "core/error.hpp"
 
 #include <gsl/gsl_multifit.h>
 
 #include <cmath>
 #include <memory>
 #include <sstream>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -23,7 +23,7 @@ PackingTable parse_packing_table(const std::string& text, const std::string& nam
             std::string hash, a, b, c;
             head >> hash >> a >> b >> c;
             if (hash != "#" || a != "phi_hat" || b != "Phi_rcp" || c != "Phi_co")
-                throw std::invalid_argument(name + ": line 1 must be '# phi_hat Phi_rcp Phi_co'");
+                throw InputError(name + ": line 1 must be '# phi_hat Phi_rcp Phi_co'");
             continue;
         }
         if (line.rfind("#", 0) == 0) {
@@ -35,9 +35,9 @@ PackingTable parse_packing_table(const std::string& text, const std::string& nam
         if (!(row >> x)) continue;  // blank line
         std::string rest;
         if (!(row >> rcp >> co) || (row >> rest))
-            throw std::invalid_argument(name + ": line " + std::to_string(number) + ": expected three numbers");
+            throw InputError(name + ": line " + std::to_string(number) + ": expected three numbers");
         if (!(x >= 0 && x <= 1 && co > 0 && co < rcp && rcp < 1))
-            throw std::invalid_argument(name + ": line " + std::to_string(number) +
+            throw InputError(name + ": line " + std::to_string(number) +
                                         ": need 0 <= phi_hat <= 1 and 0 < Phi_co < Phi_rcp < 1");
         table.phi_hat.push_back(x);
         table.Phi_rcp.push_back(rcp);
@@ -54,7 +54,7 @@ PackingTable builtin_packing_table() {
 Polynomial fit_polynomial(const std::vector<double>& x, const std::vector<double>& y, int degree) {
     const std::size_t n = x.size(), p = static_cast<std::size_t>(degree) + 1;
     if (degree < 0 || y.size() != n || n < p)
-        throw std::invalid_argument("fit_polynomial: need at least degree + 1 points");
+        throw InputError("fit_polynomial: need at least degree + 1 points");
     // Design matrix X_ik = x_i^k; GSL solves min |X c - y|_2 by an SVD of X.
     std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> X(gsl_matrix_alloc(n, p), gsl_matrix_free);
     std::unique_ptr<gsl_matrix, decltype(&gsl_matrix_free)> cov(gsl_matrix_alloc(p, p), gsl_matrix_free);
@@ -68,7 +68,7 @@ Polynomial fit_polynomial(const std::vector<double>& x, const std::vector<double
     }
     double chisq = 0.0;
     if (gsl_multifit_linear(X.get(), Y.get(), C.get(), cov.get(), &chisq, work.get()) != 0)
-        throw std::runtime_error("fit_polynomial: gsl_multifit_linear failed");
+        throw InputError("fit_polynomial: gsl_multifit_linear failed");
     Polynomial poly;
     for (std::size_t k = 0; k < p; ++k) poly.c.push_back(gsl_vector_get(C.get(), k));
     return poly;
@@ -76,7 +76,7 @@ Polynomial fit_polynomial(const std::vector<double>& x, const std::vector<double
 
 PackingFit::PackingFit(PackingTable table, int degree) : table_(std::move(table)) {
     if (table_.phi_hat.size() < static_cast<std::size_t>(degree) + 1)
-        throw std::invalid_argument("packing table has " + std::to_string(table_.phi_hat.size()) +
+        throw InputError("packing table has " + std::to_string(table_.phi_hat.size()) +
                                     " points, too few for a degree-" + std::to_string(degree) + " fit");
     rcp_ = fit_polynomial(table_.phi_hat, table_.Phi_rcp, degree);
     co_ = fit_polynomial(table_.phi_hat, table_.Phi_co, degree);
@@ -84,7 +84,7 @@ PackingFit::PackingFit(PackingTable table, int degree) : table_(std::move(table)
     for (int i = 0; i <= 1000; ++i) {
         const double x = i / 1000.0;
         if (!(rcp_(x) < 1.0 && co_(x) > 0.0 && co_(x) < rcp_(x)))
-            throw std::invalid_argument("packing fit violates 0 < Phi_co < Phi_rcp < 1 at phi_hat = " +
+            throw InputError("packing fit violates 0 < Phi_co < Phi_rcp < 1 at phi_hat = " +
                                         std::to_string(x));
     }
 }

@@ -16,7 +16,7 @@ struct PackingTable {
 };
 
 /// Parses a table with columns "phi_hat Phi_rcp Phi_co" ("# " comment lines allowed);
-/// throws std::invalid_argument with a one-line reason, naming `name` and the line.
+/// throws InputError with a one-line reason, naming `name` and the line.
 PackingTable parse_packing_table(const std::string& text, const std::string& name);
 
 /// The built-in table (size ratio 2, Desmond-Weeks formula; see the file header).
@@ -38,7 +38,7 @@ Polynomial fit_polynomial(const std::vector<double>& x, const std::vector<double
 /// Phi_rcp(phi_hat) and Phi_co(phi_hat) fitted to a packing table.
 class PackingFit {
 public:
-    /// Fits both columns with polynomials of `degree`; throws std::invalid_argument if the table
+    /// Fits both columns with polynomials of `degree`; throws InputError if the table
     /// has too few points or the fits give Phi_co >= Phi_rcp or Phi_rcp >= 1 somewhere in [0, 1].
     PackingFit(PackingTable table, int degree);
 

@@ -7,7 +7,7 @@
 namespace granseg {
 
 /// Text of the embedded data file `name` (path relative to src/, e.g.
-/// "closures/packing_binary_r2.dat"); throws std::out_of_range if there is none.
+/// "closures/packing_binary_r2.dat"); throws InvariantError if there is none (a build error).
 std::string_view embedded_file(std::string_view name);
 
 }  // namespace granseg

@@ -1,9 +1,10 @@
 #include "core/expression.hpp"
 
+#include "core/error.hpp"
+
 #include <muParser.h>
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -33,12 +34,12 @@ Expression::Expression(const std::string& text, const std::vector<std::string>& 
         // such instead of as muparser's generic "unexpected token".
         for (const auto& used : impl_->parser.GetUsedVar()) {
             if (std::find(variables_.begin(), variables_.end(), used.first) == variables_.end())
-                throw std::invalid_argument("unknown variable \"" + used.first +
+                throw InputError("unknown variable \"" + used.first +
                                             "\" (variables: " + join(variables_) + ")");
         }
         impl_->parser.Eval();  // surfaces remaining syntax errors now, not at first use
     } catch (const mu::Parser::exception_type& e) {
-        throw std::invalid_argument("malformed expression \"" + text_ + "\": " + e.GetMsg());
+        throw InputError("malformed expression \"" + text_ + "\": " + e.GetMsg());
     }
 }
 
@@ -55,7 +56,7 @@ Expression::~Expression() = default;
 
 double Expression::operator()(const std::vector<double>& values) const {
     if (values.size() != variables_.size())
-        throw std::invalid_argument("expression \"" + text_ + "\" needs " +
+        throw InputError("expression \"" + text_ + "\" needs " +
                                     std::to_string(variables_.size()) + " values");
     std::copy(values.begin(), values.end(), impl_->storage.begin());
     return impl_->parser.Eval();

@@ -13,7 +13,7 @@ namespace granseg {
 
 class Expression {
 public:
-    /// Compiles `text` with the given variable names; throws std::invalid_argument with a
+    /// Compiles `text` with the given variable names; throws InputError with a
     /// one-line reason for a syntax error or a variable outside `variables`.
     Expression(const std::string& text, const std::vector<std::string>& variables);
     Expression(const Expression& other);

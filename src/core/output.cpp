@@ -1,11 +1,12 @@
 #include "core/output.hpp"
 
+#include "core/error.hpp"
+
 #include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -15,7 +16,7 @@ void DataTable::comment(const std::string& text) { comments_.push_back(text); }
 
 void DataTable::row(const std::vector<double>& values) {
     if (values.size() != columns_.size())
-        throw std::invalid_argument("DataTable::row: " + std::to_string(values.size()) +
+        throw InputError("DataTable::row: " + std::to_string(values.size()) +
                                     " values for " + std::to_string(columns_.size()) + " columns");
     char buf[32];
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -41,7 +42,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     const fs::path target(path);
     std::error_code ec;
     if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot create directory " + target.parent_path().string() + ": " + ec.message());
+    if (ec) throw InputError("cannot create directory " + target.parent_path().string() + ": " + ec.message());
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream out(tmp, std::ios::binary);
@@ -49,13 +50,13 @@ void write_file_atomically(const std::string& path, const std::string& content) 
         out.close();
         if (!out) {
             std::remove(tmp.c_str());
-            throw std::runtime_error("cannot write " + path);
+            throw InputError("cannot write " + path);
         }
     }
     fs::rename(tmp, target, ec);
     if (ec) {
         std::remove(tmp.c_str());
-        throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+        throw InputError("cannot rename " + tmp + " to " + path + ": " + ec.message());
     }
 }
 

@@ -18,7 +18,7 @@ public:
     explicit DataTable(std::vector<std::string> columns);
     /// Adds a "# text" line below the column line (provenance, parameters).
     void comment(const std::string& text);
-    /// Appends a row; throws std::invalid_argument if its length differs from the columns.
+    /// Appends a row; throws InputError if its length differs from the columns.
     void row(const std::vector<double>& values);
     /// Appends an empty line (gnuplot block separator, e.g. between curves or surface rows).
     void blank();
@@ -34,7 +34,7 @@ private:
 };
 
 /// Writes `content` to `path` via a temporary file and rename; creates parent directories.
-/// Throws std::runtime_error naming the path on failure.
+/// Throws InputError naming the path on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 /// The files of one run, held in memory and written together by commit().

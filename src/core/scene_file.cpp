@@ -210,7 +210,7 @@ Expression SceneFile::expression(const std::string& section, const std::string& 
         fail(section, key, "expected an expression string, got " + describe_node(*node), allowed);
     try {
         return Expression(text, variables);
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         fail(section, key, e.what(), allowed);
     }
 }

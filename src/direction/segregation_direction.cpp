@@ -1,10 +1,11 @@
 #include "direction/segregation_direction.hpp"
 
+#include "core/error.hpp"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -107,7 +108,7 @@ CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vect
 SegregationDirection segregation_direction(const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                            const DirectionOptions& options) {
     if (!grad.allFinite() || !u.allFinite())
-        throw std::invalid_argument("segregation_direction: grad and u must be finite");
+        throw InputError("segregation_direction: grad and u must be finite");
     SegregationDirection r;
     r.strain = strain_rate(grad);
     r.gamma_dot = shear_rate(grad);

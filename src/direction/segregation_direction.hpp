@@ -1,6 +1,12 @@
 // The segregation direction of Sect. 2.3: from the velocity gradient and the velocity, the
 // normal d_s of the plane of maximum shear rate that is most nearly parallel to the flow.
 //
+//   solves      steps 1-3 of Sect. 2.3 (eqs. 11, 13, 36): the direction d_s of segregation
+//   inputs      the velocity gradient grad u (3x3, 1/s) and the velocity u (m/s), relative to the walls
+//   outputs     SegregationDirection: d_s, P = d_s d_s^T, the eigen data, gamma_dot, a status
+//   invariants  |d_s| = 1, or d_s = 0 where the status says no direction exists; P does not depend
+//               on the signs of d_s, u or the eigenvectors
+//
 // Conventions: grad(i, j) = d u_i / d x_j, the full velocity gradient kappa = grad u of eq. (11),
 // 3x3 in (x, y, z); u in m/s, grad in 1/s. A 2-D flow in the x-z plane is the special case with
 // the y row and column zero (DirectionOptions::planar_xz restricts the eigenproblem to that plane).
@@ -100,7 +106,7 @@ CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vect
                                  const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                  const DirectionOptions& options = {});
 
-/// The whole procedure. Throws std::invalid_argument if grad or u has a non-finite entry.
+/// The whole procedure. Throws InputError if grad or u has a non-finite entry.
 SegregationDirection segregation_direction(const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                            const DirectionOptions& options = {});
 

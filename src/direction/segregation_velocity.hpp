@@ -1,5 +1,10 @@
 // The segregation velocity S^sl of Sect. 2.2 on the direction d_s of Sect. 2.3 (eqs. 36, 42, 45, 46).
 //
+//   solves      eqs. (42), (45), (46): the segregation velocity S^sl
+//   inputs      S0 (s/m), T (m^2/s^2), d_s, gravity g (m/s^2)
+//   outputs     S^sl (m/s), the flux coefficients a_k = (S^sl)_k
+//   invariants  S^sl is parallel to d_s and vanishes where d_s = 0 or T = 0
+//
 //   eq. (42): S^sl = -(B/c) gamma_dot P g          (B: load-sharing magnitude, c: drag coefficient)
 //   eq. (45): gamma_dot = sqrt((2/3) (eps0/eta0) T) (heating = dissipation, heat flux neglected)
 //   eq. (46): S^sl = -S0 sqrt(T) P g,  S0 = (B/c) sqrt((2/3) eps0/eta0)

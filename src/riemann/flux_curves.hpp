@@ -2,6 +2,11 @@
 // (phi, Phi) of the resonant system (52): the transition curve Gamma (eq. 59), the extreme value
 // of f on it, and the two inverse branches of f at fixed Phi (the standing-wave curves f = const).
 //
+//   solves      f(phi; Phi, a) = F for phi on either side of Gamma (eqs. 55, 58, 59)
+//   inputs      F between 0 and f_min = -a Phi/4, Phi > 0, a != 0
+//   outputs     the root left of Gamma (phi <= Phi/2) or right of it (phi >= Phi/2)
+//   invariants  each root lies on its side of Gamma and in [0, Phi]; F a few ulps outside is clamped
+//
 // Gamma = {(phi, Phi) : Phi = 2 phi} is where lambda_1 = a (2 phi/Phi - 1) vanishes (eqs. 55, 58).
 // "Left of Gamma" means phi <= Phi/2 (lambda_1 has the sign of -a there), "right" phi >= Phi/2.
 // On each side f is monotone, so f = F has one root per side for F between 0 and -a Phi/4.
@@ -18,7 +23,7 @@ inline double gamma_phi(double Phi) { return 0.5 * Phi; }
 inline double flux_extremum(double Phi, double a) { return -0.25 * a * Phi; }
 
 /// The phi in [0, Phi/2] (left of Gamma) with f(phi; Phi, a) = F; F must lie between 0 and
-/// -a Phi/4 (a few ulps outside are clamped; further outside throws std::invalid_argument).
+/// -a Phi/4 (a few ulps outside are clamped; further outside throws InputError).
 /// Evaluated without cancellation near phi = 0: phi = -2F / (a (1 + sqrt(1 + 4F/(a Phi)))).
 double phi_left_of_gamma(double F, double Phi, double a);
 

@@ -1,5 +1,10 @@
 // Sampling the exact Riemann solution (riemann_solver.hpp) at xi = z/t, Toro's SAMPLE step:
 // walk the waves from the left until the first one whose speeds lie above xi.
+//
+//   solves      nothing new: evaluates the self-similar solution of riemann_solver.hpp at xi = z/t
+//   inputs      a RiemannSolution and xi
+//   outputs     phi(xi), Phi(xi), a(xi); the xi range that shows every wave
+//   invariants  phi(xi) = Q_L left of every wave, Q_R right of them, continuous across a fan
 #pragma once
 
 #include "riemann/riemann_solver.hpp"

@@ -1,11 +1,11 @@
 #include "riemann/riemann_solver.hpp"
 
+#include "core/error.hpp"
 #include "core/format.hpp"
 #include "riemann/flux_curves.hpp"
 
 #include <cfloat>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace granseg {
@@ -74,10 +74,10 @@ Connection convex_connection(const FluxSide& L, const FluxSide& R) {
 
     // Two admissible connections differ only by the rounding of f(theta) against -a Phi/4.
     const double tie = 16 * DBL_EPSILON * (L.a * L.Phi + R.a * R.Phi);
-    if (n == 0) throw std::logic_error("Riemann solver: no admissible connection (a bug)");
+    if (n == 0) throw InvariantError("Riemann solver: no admissible connection (a bug)");
     for (int k = 1; k < n; ++k)
         if (std::fabs(found[k].F - found[0].F) > tie)
-            throw std::logic_error("Riemann solver: two admissible interface fluxes " + format_number(found[0].F, 17) +
+            throw InvariantError("Riemann solver: two admissible interface fluxes " + format_number(found[0].F, 17) +
                                    " and " + format_number(found[k].F, 17) + " (a bug)");
     return found[0];
 }
@@ -128,7 +128,7 @@ RiemannSolution mirrored(const RiemannSolution& m) {
 
 void require_state(const FluxSide& s, const char* side) {
     if (!(s.Phi > 0.0 && s.phi >= 0.0 && s.phi <= s.Phi && std::isfinite(s.Phi) && std::isfinite(s.a)))
-        throw std::invalid_argument(std::string("Riemann solver: state ") + side + " = (phi " + format_number(s.phi) +
+        throw InputError(std::string("Riemann solver: state ") + side + " = (phi " + format_number(s.phi) +
                                     ", Phi " + format_number(s.Phi) + ", a " + format_number(s.a) +
                                     ") is outside 0 <= phi <= Phi, Phi > 0");
 }

@@ -12,6 +12,13 @@
 // not cross the transition curve Gamma (Isaacson-Temple entropy condition): phi_minus and
 // phi_plus lie on the same side of Gamma, or one of them on Gamma.
 //
+//   solves      the Riemann problem (60) of the resonant system (52) exactly
+//   inputs      Q_L, Q_R = (phi, Phi, a) with 0 <= phi <= Phi, 0 < Phi, a of any sign
+//   outputs     RiemannSolution: the waves (kind, end states, speeds), the traces phi_minus,
+//               phi_plus at z = 0 and the interface flux F = f_L(phi_minus) = f_R(phi_plus)
+//   invariants  Lax condition and Rankine-Hugoniot on every shock, condition (51) on the standing
+//               wave, which does not cross Gamma; F equals eq. (63) (verify_table1, _oracle, _sweep)
+//
 // Signs of a (docs/assumptions.md S1, S3):
 //   a_L, a_R > 0  convex fluxes: the construction of Table 1 (see riemann_solver.cpp);
 //   a_L, a_R < 0  concave fluxes: the mirror image z -> -z of the convex problem with
@@ -49,7 +56,7 @@ struct RiemannSolution {
 };
 
 /// Solves the Riemann problem (52), (60) exactly for states with 0 <= phi <= Phi, Phi > 0, and
-/// coefficients a of any sign. Throws std::invalid_argument for states outside that set.
+/// coefficients a of any sign. Throws InputError for states outside that set.
 RiemannSolution solve_riemann(const FluxSide& L, const FluxSide& R);
 
 /// "shock", "rarefaction" or "standing".

@@ -1,5 +1,13 @@
 // The segregation flux of Sect. 3 and the interface fluxes built from it.
 //
+//   solves      the interface flux F of eq. (64) for d_t phi + d_z f(phi; Phi, a) = 0 (eqs. 49, 66;
+//               one axis of eq. 47): eqs. (61)-(63) and the fluxes it is compared with
+//   inputs      InterfaceStates: (phi, Phi, a) either side of the face; Phi_face, a_face for the
+//               fluxes of one flux function per face
+//   outputs     F, the flux of small particles through the face along the axis
+//   invariants  F(u, u) = f(u); F(L, R) = -F(R', L') with a -> -a; the modified flux keeps
+//               0 <= phi <= Phi under eq. (64) for dt max|a|/h <= 1 (verify_table1_sweep)
+//
 // Per direction the flux of small particles is f(phi; Phi, a) = a phi (phi - Phi)/Phi
 // (eqs. 49 and 66 with a = S sqrt(T); in more dimensions a = (S^sl)_k, eq. 47 moved to the
 // left-hand side). For a > 0 it is convex with its minimum a(-Phi/4) at phi = Phi/2, the

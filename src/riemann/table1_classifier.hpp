@@ -4,6 +4,12 @@
 // conditions on the flux values f_L(phi_L), f_R(phi_R), f_L^min = -a_L Phi_L/4 (= f(Q*)) and
 // f_R^min = -a_R Phi_R/4, which is how they are evaluated here (docs/assumptions.md S2):
 //
+//   solves      which of the ten cases of Table 1 (regions A-J of Fig. 4) the problem (52), (60) is
+//   inputs      Q_L, Q_R = (phi, Phi, a)
+//   outputs     Table1Case: number 1-10 (0 for a_L a_R <= 0), region, mirrored (a_L, a_R < 0)
+//   invariants  agrees with the wave pattern of the exact solution; on a boundary between two
+//               regions both give the same flux (verify_table1_sweep)
+//
 //   Q_L left of Gamma (phi_L <= Phi_L/2)       Q_L right of Gamma (phi_L > Phi_L/2)
 //   3 C  f_R(phi_R) < f_L^min                   8 H   f_R(phi_R) < f_L(phi_L)
 //   1 A  phi_R < Phi_R/2, f_R > f_L(phi_L)      7 G   phi_R < Phi_R/2 (and f_R >= f_L)

@@ -2,7 +2,6 @@
 
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -30,13 +29,13 @@ Material read_material(const SceneFile& scene) {
             text << in.rdbuf();
             try {
                 table = parse_packing_table(text.str(), path);
-            } catch (const std::invalid_argument& e) {
+            } catch (const InputError& e) {
                 scene.fail(s, "packing_table", e.what(), "columns '# phi_hat Phi_rcp Phi_co'");
             }
         }
         try {
             m.packing = PackingFit(std::move(table), static_cast<int>(degree));
-        } catch (const std::invalid_argument& e) {
+        } catch (const InputError& e) {
             scene.fail(s, path.empty() ? "packing_degree" : "packing_table", e.what(),
                        "a fit with 0 < Phi_co < Phi_rcp < 1 on [0, 1]");
         }

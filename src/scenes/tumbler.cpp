@@ -6,7 +6,6 @@
 #include "scenes/material_section.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -53,15 +52,22 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     s.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
 
-    // The initial bed, built once here: phi_hat0 in [0, 1] wherever there is material, and the
-    // bed of the initial mixture below Phi_rcp(phi_hat0) everywhere (with packing feedback).
+    // Cross-key conditions on the initial bed: phi_hat0 in [0, 1] wherever the drum holds material,
+    // and (packing feedback) the bed below Phi_rcp(phi_hat0) in every cell, which building the
+    // drum checks (FlowSolver::set_state).
+    const Grid grid = s.drum.grid();
+    const std::vector<double> fill = drum_fill_fraction(s.drum, grid);
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        const double v = s.phi_hat0(b.x, b.z);
+        if (fill[b.c] > 0.0 && !(v >= 0.0 && v <= 1.0))
+            scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+                       "0 <= phi_hat <= 1 wherever the drum holds material");
+    });
     try {
         const CoupledTumbler probe(s);
         t.run.regions = coupled_regions(s.drum, surface_level(s.material, probe.initial_mixture()));
-    } catch (const std::invalid_argument& e) {
-        scene.fail("initial", "phi_hat", e.what(), "0 <= phi_hat <= 1 wherever the drum holds material");
     } catch (const InvariantError& e) {
-        scene.fail("initial", "phi_hat", e.what(), "a mixture whose Phi_rcp(phi_hat) lies above the bed's Phi");
+        scene.fail("initial", "phi_hat", e.what(), "a mixture whose Phi_rcp(phi_hat) lies above the initial bed's Phi");
     }
     return t;
 }

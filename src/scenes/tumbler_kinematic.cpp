@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -64,20 +63,21 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     s.run.samples = static_cast<int>(scene.integer("output", "samples", 1, 100000, 100));
     s.run.frames = static_cast<int>(scene.integer("output", "frames", 0, 1000, 0));
 
-    // Cross-key conditions on the grid: phi_hat0 in [0, 1] at every bed-cell centre.
+    // The drum the keys describe; RollingDrumFlow rejects what the checks above do not cover.
+    RollingDrumFields fields;
     try {
-        const RollingDrumFields fields = discretize(RollingDrumFlow(drum), k.cells_per_diameter, k.Phi);
-        const Grid& g = fields.grid;
-        for_each_bed_cell(g, [&](const BedCell& b) {
-            const double v = k.phi_hat0(b.x, b.z);
-            if (!(v >= 0.0 && v <= 1.0))
-                scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
-                           "0 <= phi_hat <= 1 at every bed cell");
-        });
+        fields = discretize(RollingDrumFlow(drum), k.cells_per_diameter, k.Phi);
         s.run.regions = default_regions(RollingDrumFlow(drum));
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
         scene.fail("drum", "diameter", e.what(), "a drum of docs/scenes.md");
     }
+    // Cross-key conditions on the grid: phi_hat0 in [0, 1] at every bed-cell centre.
+    for_each_bed_cell(fields.grid, [&](const BedCell& b) {
+        const double v = k.phi_hat0(b.x, b.z);
+        if (!(v >= 0.0 && v <= 1.0))
+            scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+                       "0 <= phi_hat <= 1 at every bed cell");
+    });
     return s;
 }
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -13,7 +12,7 @@ namespace {
 
 void check_face_field(const Grid& grid, int axis, const std::vector<double>& field, const char* what) {
     if (!field.empty() && field.size() != grid.faces(axis))
-        throw std::invalid_argument(std::string("bulk transport: ") + what + " needs one value per face");
+        throw InputError(std::string("bulk transport: ") + what + " needs one value per face");
 }
 
 }  // namespace
@@ -46,7 +45,7 @@ void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, co
             throw wall_flux(f);
         const bool outflow = lower_in ? m > 0.0 : m < 0.0;
         if (!outflow && inflow.empty())
-            throw std::invalid_argument("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
+            throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
         G[f] = m * (outflow ? hat[lower_in ? lower : upper] : inflow[f]);
     };
     bool through_wall = false;
@@ -75,7 +74,7 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
                            double dt, std::vector<double>& phi, double Phi_min) {
     const Grid& g = grid_;
     if (Phi_old.size() != g.cells() || phi.size() != g.cells())
-        throw std::invalid_argument("bulk transport: Phi_old and phi need one value per cell");
+        throw InputError("bulk transport: Phi_old and phi need one value per cell");
     hat_.resize(g.cells());
     for (std::size_t c = 0; c < g.cells(); ++c) hat_[c] = inside_[c] ? composition(phi[c], Phi_old[c]) : 0.0;
     std::array<bool, 3> along{};  // axes that carry mass: more than one cell and a flux field
@@ -142,7 +141,7 @@ double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, cons
 }
 
 FaceFields stream_function_mass_fluxes(const Grid& grid, const std::function<double(double, double)>& psi) {
-    if (grid.n[1] != 1) throw std::invalid_argument("stream function: needs a grid in the x-z plane (ny = 1)");
+    if (grid.n[1] != 1) throw InputError("stream function: needs a grid in the x-z plane (ny = 1)");
     const int nx = grid.n[0], nz = grid.n[2];
     std::vector<double> corner(static_cast<std::size_t>(nx + 1) * (nz + 1));
     const auto at = [nx](int i, int k) { return static_cast<std::size_t>(i) + static_cast<std::size_t>(nx + 1) * k; };

@@ -1,6 +1,13 @@
 // Bulk transport of phi with the flow's own face mass fluxes (the coupling contract of the
 // project, docs/sect2.2_segregation.md "Coupling"; eq. 65 with F^bulk from the mass balance).
 //
+//   solves      the bulk part of eq. (47) split by eq. (65), d_t phi + div(phi u) = 0, with the flow's
+//               face mass fluxes M
+//   inputs      the grid, Phi_old, M per axis, the inflow phi_hat, dt, phi
+//   outputs     phi after the step; bulk_time_step(), the largest safe dt
+//   invariants  phi_new/Phi_new is a convex combination of old phi_hat for dt sum_out |M|/h <= Phi_old;
+//               the sum of phi changes only through open domain boundaries
+//
 // The flow solver hands over, per axis, the face mass fluxes M (Phi u . n, averaged over its
 // stages) with which it updated Phi:
 //     Phi_new = Phi_old - dt sum_axis (M[upper] - M[lower])/h_axis,   M = 0 on wall faces.
@@ -38,7 +45,7 @@ public:
     /// step's largest Courant number dt sum_out |M|/(h Phi_old) over the inside cells with
     /// Phi_old >= Phi_min (the share of a cell's material the step moved out; <= 1 keeps phi_hat a
     /// convex combination). Throws InvariantError if M != 0 on a face next to an outside cell,
-    /// std::invalid_argument if inflow has no phi_hat or a field has the wrong size.
+    /// InputError if inflow has no phi_hat or a field has the wrong size.
     double step(const std::vector<double>& Phi_old, const FaceFieldRefs& M, const FaceFields& inflow_phi_hat, double dt,
                 std::vector<double>& phi, double Phi_min = 0.0);
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -19,7 +18,7 @@ FctBulkTransport::FctBulkTransport(Grid grid) : grid_(std::move(grid)), donor_(g
 void FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vector<double>& Phi_new, const FaceFields& M,
                             const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi) {
     const std::size_t cells = grid_.cells();
-    if (Phi_new.size() != cells) throw std::invalid_argument("bulk transport: Phi_new needs one value per cell");
+    if (Phi_new.size() != cells) throw InputError("bulk transport: Phi_new needs one value per cell");
     hat_old_.resize(cells), hat_td_.resize(cells), hi_.resize(cells), lo_.resize(cells);
     for (std::size_t c = 0; c < cells; ++c) hat_old_[c] = composition(phi[c], Phi_old[c]);
     donor_.step(Phi_old, refs(M), inflow_phi_hat, dt, phi);  // the donor-cell (low-order) solution

@@ -3,6 +3,12 @@
 // phi_hat, limited so that every new phi_hat lies between the smallest and the largest of the old
 // and the donor-cell phi_hat of the cell and its face neighbours (beyond the paper; assumption T5).
 //
+//   solves      the same bulk transport as bulk_transport.hpp, with limited antidiffusion (assumption T5)
+//   inputs      the grid, Phi_old, Phi_new, M per axis, the inflow phi_hat, dt, phi
+//   outputs     phi after the step
+//   invariants  conservative as the donor-cell step; every new phi_hat between the local extremes of
+//               the old and the donor-cell phi_hat, so 0 <= phi <= Phi whenever the donor-cell step keeps it
+//
 // Per face between inside cells L (lower) and U (upper) along an axis, with c = |M| dt/(h Phi_donor):
 //     A = |M| (1 - c)/2 (phi_hat_U - phi_hat_L)          (Lax-Wendroff minus donor cell)
 // set to 0 where it points down the gradient of the donor-cell solution (Zalesak's prelimiter),

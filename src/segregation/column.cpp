@@ -1,7 +1,6 @@
 #include "segregation/column.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -11,7 +10,7 @@ Column make_column(const ColumnSetup& setup) {
     const int n = setup.cells;
     const double h = c.grid.h[2];
     const auto coefficient = [&](double T) {
-        if (!(T >= 0.0)) throw std::invalid_argument("column: T < 0");
+        if (!(T >= 0.0)) throw InputError("column: T < 0");
         return setup.S * std::sqrt(T);  // a = S sqrt(T) (eq. 66)
     };
     c.fields.Phi.resize(n);

@@ -2,6 +2,11 @@
 // [0, length] with zero-flux ends, z up and gravity down, given profiles Phi(z) and T(z), plus
 // optional remixing D (beyond the paper). Shared by the segregation1d scene, the verification
 // programs and the benchmark, so they all run exactly the same discretisation.
+//
+//   solves      nothing over time: sets up eq. (66) on a column for SegregationSolver
+//   inputs      ColumnSetup: cells, length, S, D, the profiles Phi(z), T(z), the interface rule
+//   outputs     Column: the grid and FrozenFields (Phi and a_z = S sqrt(T) at centres and faces)
+//   invariants  0 < Phi < 1 and T >= 0 wherever they are read (InputError otherwise)
 #pragma once
 
 #include "core/choice.hpp"
@@ -40,7 +45,7 @@ struct Column {
 };
 
 /// The grid and the frozen fields of a column (Phi, T evaluated at the centres; at the faces as
-/// the interface rule says). Throws std::invalid_argument if a value is out of range.
+/// the interface rule says). Throws InputError if a value is out of range.
 Column make_column(const ColumnSetup& setup);
 
 /// phi0 evaluated at the cell centres.

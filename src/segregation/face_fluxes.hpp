@@ -1,6 +1,13 @@
 // The segregation flux on every face of one axis, for any scheme of the table, plus the
 // remixing flux.
 //
+//   solves      the face fluxes F of eq. (64) along one axis for any row of the scheme table, plus
+//               the remixing flux (assumption G3)
+//   inputs      grid, axis, FrozenFields, scheme, phi (cell averages), each cell's state at its
+//               lower and upper face
+//   outputs     F on every face normal to the axis
+//   invariants  F = 0 on every wall face
+//
 // The face between a lower cell L and an upper cell U sees the state L presents at its upper
 // face and the state U presents at its lower face (the cell averages for first order, the
 // reconstructed values for order 2), each with its own cell's Phi and a, and, for the schemes

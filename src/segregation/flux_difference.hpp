@@ -1,6 +1,11 @@
 // Face fields on a Grid and the flux-differencing update of eq. (64), shared by the bulk
 // transport and the segregation sub-step (and by anything else in conservative form).
 //
+//   solves      the update of eq. (64), u_i <- u_i - dt/h (F_upper - F_lower), along one axis
+//   inputs      the grid, F on every face normal to the axis, dt, u
+//   outputs     u in every inside cell
+//   invariants  the sum of u over the inside cells changes only through open domain-boundary faces
+//
 // A face normal to `axis` lies between a lower and an upper cell along that axis. A face is a
 // wall when a side is missing (a non-periodic domain boundary) or is an outside cell
 // (Grid::inside == 0); the segregation fluxes vanish there. Eq. (64), for every inside cell,

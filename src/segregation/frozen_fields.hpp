@@ -1,6 +1,11 @@
 // What the segregation sub-step reads and never changes: eq. (52b) freezes Phi (and T) while
 // phi segregates. The flow solver (or a test) fills it once per step.
 //
+//   solves      nothing: the fields eq. (52b) freezes during the segregation sub-step
+//   inputs      filled by the flow solver, a scene or a test
+//   outputs     read by SegregationSolver and segregation_face_fluxes
+//   invariants  one value per cell (face), 0 <= Phi < 1, finite a, D >= 0 (check_frozen_fields)
+//
 // Per axis k the segregation flux is f_k(phi) = a_k phi (phi - Phi)/Phi (eq. 47 with the flux on
 // the left-hand side), a_k = (S^sl)_k = -S0 sqrt(T) (d_s . g)(d_s)_k (eq. 46) per cell. a_k may
 // have either sign and change sign between neighbouring cells (docs/assumptions.md S1); in 1-D
@@ -27,7 +32,7 @@ struct FrozenFields {
     double D = 0.0;
 };
 
-/// Throws std::invalid_argument with a one-line reason if a field has the wrong size or holds
+/// Throws InputError with a one-line reason if a field has the wrong size or holds
 /// a value outside its range (Phi in [0, 1), finite a, D >= 0).
 void check_frozen_fields(const Grid& grid, const FrozenFields& fields);
 

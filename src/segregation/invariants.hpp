@@ -1,6 +1,11 @@
 // The invariants a segregation run checks while it runs: the amount of small particles (sum of
 // phi; conserved with zero-flux walls), the bounds 0 <= phi <= Phi (kept by the modified schemes,
 // broken by the classic ones, Sect. 4.1) and finite values.
+//
+//   solves      nothing: measures a run against its invariants
+//   inputs      the grid, phi, Phi, the amounts at the start and now, the solver's largest clip
+//   outputs     total_amount, BoundsMonitor; InvariantError when an invariant is broken
+//   invariants  sum of phi (zero-flux walls), 0 <= phi <= Phi (bounded schemes), finite phi
 #pragma once
 
 #include "core/grid.hpp"

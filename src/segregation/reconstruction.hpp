@@ -1,6 +1,11 @@
 // Limited linear reconstruction of the composition phi_hat = phi/Phi for the second-order
 // segregation scheme (modified-godunov-2, beyond the paper).
 //
+//   solves      nothing over time: the face states of eq. (63) at second order
+//   inputs      phi and Phi per cell, the limiter
+//   outputs     phi at the lower and at the upper face of every cell along one axis
+//   invariants  face values in [0, Phi_i]; the two of a cell average to phi_i
+//
 // Reconstructing phi itself would let a face value exceed Phi_i where Phi varies; reconstructing
 // phi_hat and multiplying by the cell's own Phi_i gives face states in [0, Phi_i], the states the
 // modified flux (eqs. 61-63) expects. The slope s_i of phi_hat is limited (minmod or monotonized

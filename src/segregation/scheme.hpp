@@ -9,7 +9,6 @@
 #include "riemann/segregation_flux.hpp"
 
 #include <cstddef>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,12 +49,12 @@ public:
     /// The rows the code refers to by name (found by name at compile time).
     static const SegregationScheme modified_godunov, modified_godunov_2, classic_upwind, classic_godunov;
 
-    /// The scheme called `name`; a compile-time error in a constant expression, std::logic_error
+    /// The scheme called `name`; a compile-time error in a constant expression, InvariantError
     /// otherwise (scene files go through parse_scheme, which throws InputError).
     static constexpr SegregationScheme named(std::string_view name) {
         for (std::size_t i = 0; i < std::size(kSegregationSchemes); ++i)
             if (kSegregationSchemes[i].name == name) return SegregationScheme(i);
-        throw std::logic_error("no segregation scheme \"" + std::string(name) + "\"");
+        throw InvariantError("no segregation scheme \"" + std::string(name) + "\"");
     }
     /// Every scheme, in the order of the table.
     static std::vector<SegregationScheme> all() {

@@ -7,14 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace granseg {
 
 SegregationSolver::SegregationSolver(Grid grid, SegregationOptions options)
     : grid_(std::move(grid)), options_(options) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
-        throw std::invalid_argument("segregation: CFL number " + format_number(options_.cfl) +
+        throw InputError("segregation: CFL number " + format_number(options_.cfl) +
                                     " is outside (0, 1]; above 1 the scheme no longer keeps 0 <= phi <= Phi");
     for (std::size_t c = 0; c < grid_.cells(); ++c) inside_cells_ += grid_.is_inside(c);
 }
@@ -47,7 +46,7 @@ void SegregationSolver::face_fluxes(const FrozenFields& fields, int axis, const 
 
 void SegregationSolver::step(const FrozenFields& fields, double dt, std::vector<double>& phi) {
     if (phi.size() != grid_.cells() || fields.Phi.size() != grid_.cells())
-        throw std::invalid_argument("segregation: phi and Phi need one value per cell");
+        throw InputError("segregation: phi and Phi need one value per cell");
     for (int axis = 0; axis < 3; ++axis) {  // Lie splitting over the axes (eq. 65)
         if (fields.a[axis].empty()) continue;
         face_fluxes(fields, axis, phi, F_);

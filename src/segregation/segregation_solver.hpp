@@ -1,5 +1,13 @@
 // The segregation sub-step: phi segregates with Phi and T frozen (eq. 52b).
 //
+//   solves      eq. (52b), d_t phi + sum_k d_k (a_k phi (phi - Phi)/Phi) = 0 with Phi and T frozen,
+//               by eq. (64) split over the axes as in eq. (65)
+//   inputs      the Grid, FrozenFields (Phi, a_k, interface values, D), phi, dt; SegregationOptions
+//               (a row of the scheme table, the limiter, the CFL number)
+//   outputs     phi after the sub-step (inside cells only); time_step(), the largest safe dt
+//   invariants  sum of phi changes only through open domain-boundary faces; a bounded scheme
+//               keeps 0 <= phi <= Phi for cfl <= 1 (the guard records its largest round-off clip)
+//
 // On any Grid (1-D column, 2-D x-z plane with embedded walls, periodic axes) the sub-step is
 // split over the axes (eq. 65, Lie splitting x, then y, then z; docs/assumptions.md G1): along
 // each axis that has coefficients a_k, eq. (64) with the interface fluxes of face_fluxes.hpp.
@@ -48,7 +56,7 @@ struct SegregationOptions {
 
 class SegregationSolver {
 public:
-    /// Throws std::invalid_argument (one line) if options.cfl is outside (0, 1].
+    /// Throws InputError (one line) if options.cfl is outside (0, 1].
     SegregationSolver(Grid grid, SegregationOptions options);
 
     /// cfl * dt_max (see above); +infinity if no coefficient and no diffusion is non-zero.

@@ -40,7 +40,7 @@ CoupledTumbler::InitialMixture CoupledTumbler::initial_mixture(const CoupledTumb
                 if (!(fill[c] > 0.0)) continue;
                 const double x = grid.center(0, i), z = grid.center(2, k), v = setup.phi_hat0(x, z);
                 if (!(v >= 0.0 && v <= 1.0))
-                    throw std::invalid_argument("tumbler: initial phi_hat = " + format_number(v) + " at x = " +
+                    throw InputError("tumbler: initial phi_hat = " + format_number(v) + " at x = " +
                                                 format_number(x) + ", z = " + format_number(z) + " outside [0, 1]");
                 m.phi_hat[c] = v;
                 m.mean += fill[c] * v, filled += fill[c];  // (assumption C3)
@@ -55,10 +55,10 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
       flow_(setup.drum.grid(), setup.material, with_mixture(setup.flow, initial_.mean), setup.drum.frame()),
       bulk_(flow_.grid()),
       segregation_(flow_.grid(), setup.segregation) {
-    if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw std::invalid_argument("tumbler: S must be finite and >= 0");
-    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw std::invalid_argument("tumbler: bulk CFL outside (0, 1]");
+    if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
+    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("tumbler: bulk CFL outside (0, 1]");
     if (!preserves_bounds(setup.segregation.scheme))
-        throw std::invalid_argument("tumbler: the segregation scheme must keep 0 <= phi <= Phi (modified-godunov, -2)");
+        throw InputError("tumbler: the segregation scheme must keep 0 <= phi <= Phi (modified-godunov, -2)");
     const Grid& g = flow_.grid();
     const std::vector<double> Phi0 =
         setup.packing_feedback ? drum_bed_at_rest(setup.drum, g, setup.material, initial_.phi_hat, initial_.mean, setup.flow.T_floor)

@@ -65,7 +65,7 @@ struct CoupledTimers {
 class CoupledTumbler {
 public:
     /// The drum at rest with the bed of the initial mixture (assumptions F6, C3) and
-    /// phi = phi_hat0 Phi. Throws std::invalid_argument for phi_hat0 outside [0, 1] in a bed cell,
+    /// phi = phi_hat0 Phi. Throws InputError for phi_hat0 outside [0, 1] in a bed cell,
     /// InvariantError if the bed is packed beyond Phi_rcp(phi_hat0) somewhere (packing feedback).
     explicit CoupledTumbler(const CoupledTumblerSetup& setup);
 

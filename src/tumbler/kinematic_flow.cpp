@@ -1,10 +1,10 @@
 #include "tumbler/kinematic_flow.hpp"
 
+#include "core/error.hpp"
 #include "segregation/bulk_transport.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace granseg {
@@ -18,7 +18,7 @@ using Eigen::Vector2d;
 const Matrix2d kJ = (Matrix2d() << 0.0, 1.0, -1.0, 0.0).finished();
 
 void require(bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("RollingDrumFlow: " + what);
+    if (!ok) throw InputError("RollingDrumFlow: " + what);
 }
 
 Eigen::Vector3d embed(const Vector2d& v) { return {v(0), 0.0, v(1)}; }
@@ -137,7 +137,7 @@ Eigen::Matrix3d RollingDrumFlow::relative_velocity_gradient(double x, double z) 
 }
 
 RollingDrumFields discretize(const RollingDrumFlow& flow, int cells_per_diameter, double Phi) {
-    if (cells_per_diameter < 2) throw std::invalid_argument("discretize: need cells_per_diameter >= 2");
+    if (cells_per_diameter < 2) throw InputError("discretize: need cells_per_diameter >= 2");
     const double R = flow.radius();
     RollingDrumFields f;
     f.grid = Grid::plane_xz(cells_per_diameter, cells_per_diameter, -R, -R, 2 * R, 2 * R);

@@ -1,5 +1,11 @@
 // A prescribed rolling-regime flow in the drum of Sect. 4.2, for scenes that skip the flow solver.
 //
+//   solves      nothing over time: a prescribed steady rolling flow (assumptions K1-K3)
+//   inputs      RollingDrumParameters: diameter, fill fraction, rotation rate, repose angle, layer
+//   outputs     the stream function, u, u_rel, grad u_rel; on a grid the face mass fluxes M
+//   invariants  psi = 0 on the wall and on the free surface: no flux through either; the discrete
+//               divergence of M vanishes in every bed cell (verify_kinematic_flow)
+//
 // Model (docs/assumptions.md K1-K3; after Khakhar, McCarthy, Shinbrot & Ottino, Phys. Fluids 9,
 // 31 (1997), and Gray, J. Fluid Mech. 441, 1 (2001)): a drum of radius R turning at Omega about
 // its axis y, filled at rest to the height fill_fraction * diameter. In the rolling regime the
@@ -48,7 +54,7 @@ struct RollingDrumParameters {
 
 class RollingDrumFlow {
 public:
-    /// Throws std::invalid_argument naming the parameter if one is out of range (0 < diameter,
+    /// Throws InputError naming the parameter if one is out of range (0 < diameter,
     /// 0 < fill_fraction < 1, rotation_rate != 0, 0 <= repose_angle < 90, 0 < delta0 < min(L, R + d)).
     explicit RollingDrumFlow(const RollingDrumParameters& parameters);
 

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -18,11 +17,11 @@ namespace {
 
 RollingDrumFields checked_fields(const RollingDrumFlow& flow, const KinematicTumblerSetup& setup) {
     if (!(setup.Phi > 0.0 && setup.Phi < 1.0))
-        throw std::invalid_argument("kinematic tumbler: Phi = " + format_number(setup.Phi) + " outside (0, 1)");
+        throw InputError("kinematic tumbler: Phi = " + format_number(setup.Phi) + " outside (0, 1)");
     if (!(setup.S >= 0.0 && std::isfinite(setup.S)))
-        throw std::invalid_argument("kinematic tumbler: S must be finite and >= 0");
+        throw InputError("kinematic tumbler: S must be finite and >= 0");
     if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0))
-        throw std::invalid_argument("kinematic tumbler: bulk CFL number outside (0, 1]");
+        throw InputError("kinematic tumbler: bulk CFL number outside (0, 1]");
     return discretize(flow, setup.cells_per_diameter, setup.Phi);
 }
 
@@ -48,7 +47,7 @@ KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
         ++bed_cells_;
         const double phi_hat = setup.phi_hat0(b.x, b.z);
         if (!(phi_hat >= 0.0 && phi_hat <= 1.0))
-            throw std::invalid_argument("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " +
+            throw InputError("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " +
                                         format_number(b.x) + ", z = " + format_number(b.z) + " outside [0, 1]");
         frozen_.Phi[c] = setup.Phi;
         phi_[c] = phi_hat * setup.Phi;
@@ -67,7 +66,7 @@ KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
 
 void KinematicTumbler::step(double dt, const std::function<void(const std::vector<double>&)>& after_bulk) {
     if (!(dt > 0.0 && dt <= dt_max_ * (1 + 1e-12)))
-        throw std::invalid_argument("kinematic tumbler: step " + format_number(dt) + " outside (0, time_step()]");
+        throw InputError("kinematic tumbler: step " + format_number(dt) + " outside (0, time_step()]");
     // Phi_old = Phi_new = Phi: the discrete divergence of M vanishes (kinematic_flow.hpp).
     if (bulk_ == BulkScheme::fct)
         fct_.step(frozen_.Phi, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk; assumption T5)

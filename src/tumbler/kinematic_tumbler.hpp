@@ -3,6 +3,12 @@
 // constant and T steady. Shared by the tumbler-kinematic scene and verify_tumbler_kinematic, so
 // both run exactly this code path.
 //
+//   solves      eq. (47) in the drum, split as in eq. (65): bulk transport, then eq. (52b)
+//   inputs      KinematicTumblerSetup: the drum, cells per diameter, Phi, S, gravity, the material,
+//               the schemes, the CFL number, phi_hat at t = 0
+//   outputs     phi after each step; d_s, T and a_k per bed cell
+//   invariants  sum of phi conserved, 0 <= phi <= Phi after both parts, a = 0 in the solid-body core
+//
 // Set-up, once (everything in the inertial frame, where the flow is steady):
 //   per bed cell c: d_s = segregation_direction(grad u_rel, u_rel) in the x-z plane (Sect. 2.3),
 //   T = (3/2)(eta0/eps0) gamma_dot^2 with gamma_dot = sqrt(grad u_rel : grad u_rel) (eqs. 43, 45),
@@ -45,7 +51,7 @@ struct KinematicTumblerSetup {
 
 class KinematicTumbler {
 public:
-    /// Builds the grid, the mass fluxes and a_k. Throws std::invalid_argument if a value is out
+    /// Builds the grid, the mass fluxes and a_k. Throws InputError if a value is out
     /// of range (the drum parameters, Phi outside (0, 1), phi_hat0 outside [0, 1] at a bed cell).
     explicit KinematicTumbler(const KinematicTumblerSetup& setup);
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -49,7 +48,7 @@ PatternRegions drum_regions(double d, double delta0, double R) {
 
 ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                            double radius, int shells, double bed_level) {
-    if (shells < 1 || !(radius > 0.0)) throw std::invalid_argument("shell profile: needs shells >= 1 and radius > 0");
+    if (shells < 1 || !(radius > 0.0)) throw InputError("shell profile: needs shells >= 1 and radius > 0");
     std::vector<double> r_sum(shells, 0.0), small(shells, 0.0), all(shells, 0.0);
     ShellProfile p;
     p.cells.assign(shells, 0);

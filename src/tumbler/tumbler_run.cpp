@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -34,7 +33,7 @@ void merge(BoundsMonitor& run, const BoundsMonitor& step) {
 TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
                                        const TumblerStepObserver& observer) {
     if (!(options.t_end > tumbler.time()) || options.samples < 1 || options.frames < 0)
-        throw std::invalid_argument("tumbler run: needs t_end > t, samples >= 1, frames >= 0");
+        throw InputError("tumbler run: needs t_end > t, samples >= 1, frames >= 0");
     const Grid& grid = tumbler.grid();
     const std::vector<double>& Phi = tumbler.Phi();
     const double Phi_max = *std::max_element(Phi.begin(), Phi.end());

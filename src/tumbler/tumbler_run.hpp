@@ -7,6 +7,11 @@
 //   - 0 <= phi <= Phi after the bulk step and after the segregation sub-step, up to the
 //     round-off allowance kBoundRoundOff Phi (before the solver's guard clips; see invariants.hpp);
 //   - every phi finite.
+//
+//   solves      nothing new: runs KinematicTumbler in time
+//   inputs      the tumbler, t_end, the sample and frame counts, the pattern regions
+//   outputs     TumblerRunResult: the metrics at every sample time, snapshots of phi_hat, amounts
+//   invariants  the list above, checked while it runs
 #pragma once
 
 #include "segregation/invariants.hpp"

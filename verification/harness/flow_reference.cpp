@@ -11,7 +11,6 @@
 #include <cmath>
 #include <functional>
 #include <memory>
-#include <stdexcept>
 
 namespace granseg::verify {
 

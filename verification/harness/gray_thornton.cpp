@@ -1,8 +1,9 @@
 #include "harness/gray_thornton.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg::verify {
 
@@ -16,7 +17,7 @@ PiecewiseLinear homogeneous_batch(double psi0, double q, double t) {
 PiecewiseLinear graded_batch(double z0, double q, double t) {
     const double s = q * t;
     if (s > 1.0 + 2.0 * std::sqrt(z0 * (1.0 - z0)))
-        throw std::invalid_argument("graded_batch: the shocks have met; the formula no longer holds");
+        throw InputError("graded_batch: the shocks have met; the formula no longer holds");
     const double fan_lo = z0 - s, fan_hi = z0 + s;  // edges of the centred fan
     const double lower = fan_lo > 0.0 ? 0.0 : std::pow(std::sqrt(s) - std::sqrt(z0), 2);
     const double upper = fan_hi < 1.0 ? 1.0 : 1.0 - std::pow(std::sqrt(s) - std::sqrt(1.0 - z0), 2);
@@ -67,7 +68,7 @@ std::vector<double> logistic_cell_averages(double P, double psi0, int cells) {
 }
 
 std::vector<double> smooth_periodic_averages(double A, double q, double t, int cells) {
-    if (!(4.0 * M_PI * q * A * t < 1.0)) throw std::invalid_argument("smooth_periodic_averages: past the breaking time");
+    if (!(4.0 * M_PI * q * A * t < 1.0)) throw InputError("smooth_periodic_averages: past the breaking time");
     const auto psi = [&](double z) {
         double xi = z;
         for (int i = 0; i < 100; ++i) {  // g(xi) = xi + 2 q A t sin(2 pi xi) - z, g' >= 1 - 4 pi q A t > 0

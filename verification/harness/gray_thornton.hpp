@@ -25,7 +25,7 @@ PiecewiseLinear homogeneous_batch(double psi0, double q, double t);
 /// Normally graded batch, small on top (psi = 0 below z0, 1 above): a centred fan
 /// psi = (1 + (z - z0)/(q t))/2, then the shocks z_l = (sqrt(qt) - sqrt(z0))^2 (after t = z0/q)
 /// and z_u = 1 - (sqrt(qt) - sqrt(1 - z0))^2 (after t = (1 - z0)/q); valid until they meet at
-/// t = (1 + 2 sqrt(z0 (1 - z0)))/q (std::invalid_argument after that).
+/// t = (1 + 2 sqrt(z0 (1 - z0)))/q (InputError after that).
 PiecewiseLinear graded_batch(double z0, double q, double t);
 
 /// Averages of the profile over `cells` equal cells of [0, length] (midpoint rule on each linear

@@ -3,11 +3,36 @@
 #include "core/error.hpp"
 
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 
 namespace granseg::verify {
 
+namespace {
+
+const char* program_name = "verification program";
+
+/// The library's errors that escape a program end it like the CLI: the one-line message and
+/// exit status 2 (InputError) or 3 (InvariantError); anything else aborts as usual.
+[[noreturn]] void on_uncaught_exception() {
+    try {
+        if (const std::exception_ptr error = std::current_exception()) std::rethrow_exception(error);
+    } catch (const InputError& e) {
+        std::cerr << program_name << ": " << e.what() << '\n';
+        std::_Exit(kExitBadInput);
+    } catch (const InvariantError& e) {
+        std::cerr << program_name << ": stopped, invariant broken: " << e.what() << '\n';
+        std::_Exit(kExitInvariant);
+    } catch (...) {
+    }
+    std::abort();
+}
+
+}  // namespace
+
 ProgramOptions parse_program_options(int argc, char** argv) {
+    if (argc > 0) program_name = argv[0];
+    std::set_terminate(on_uncaught_exception);
     ProgramOptions options;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
