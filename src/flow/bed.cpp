@@ -1,14 +1,14 @@
 #include "flow/bed.hpp"
 
 #include "closures/closures.hpp"
+#include "core/error.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace granseg {
 
 Grid drum_grid(int n, double R, int ny, double ly) {
-    if (n < 4 || ny < 1 || !(R > 0) || !(ly > 0)) throw std::invalid_argument("drum_grid: need n >= 4, ny >= 1, R > 0");
+    if (n < 4 || ny < 1 || !(R > 0) || !(ly > 0)) throw InputError("drum_grid: need n >= 4, ny >= 1, R > 0");
     Grid g = Grid::plane_xz(n, n, -R, -R, 2 * R, 2 * R);
     g.n[1] = ny;
     g.h[1] = ny > 1 ? ly / ny : 1.0;

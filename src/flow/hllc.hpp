@@ -35,7 +35,7 @@ struct FaceFlux {
 /// S_R = max(u_L + c_L, u_R + c_R). The contact speed S* is kept inside [S_L, S_R], so both star
 /// volume fractions are >= 0. Two empty sides give zero flux. Written with selects instead of
 /// branches so that loops over faces vectorise.
-[[gnu::always_inline]] inline FaceFlux hllc_flux(const FaceState& L, const FaceState& R) {
+inline __attribute__((always_inline)) FaceFlux hllc_flux(const FaceState& L, const FaceState& R) {
     const double S_L = std::min(L.u_n - L.c, R.u_n - R.c);
     const double S_R = std::max(L.u_n + L.c, R.u_n + R.c);
     const double d_L = L.Phi * (S_L - L.u_n);  // <= 0: mass flux relative to the left wave
@@ -87,14 +87,14 @@ inline FaceState mirror(FaceState s) {
 /// `load` is the weight per area the cell cannot pass on through its uphill face because its own
 /// pressure is too small (an "unsupported" cell: a partly filled surface cell, dust), plus what
 /// rests on it (`carry`, the pressure arriving at its uphill face, which such a cell passes on);
-/// see flow_loads() in convection.cpp. Where p' exceeds the cell's own p/Phi scale the sound speed
+/// see unsupported_loads() in flow/loads.cpp. Where p' exceeds the cell's own p/Phi scale the sound speed
 /// is raised to c'^2 = max(c^2, p'/Phi') so that the HLLC waves can release p' into vacuum.
 /// Returns p - p', which the cell adds to the face's normal momentum flux. Then every cell feels
 /// its full weight Phi (psi_face,up - psi_face,down)/h, and a state whose face pressures agree
 /// across every face and whose velocity vanishes has zero net force (well balanced): its
 /// discrete equilibrium is p_k - p_(k+1) = (Phi_k + Phi_(k+1)) |g| h / 2, the trapezoidal rule,
 /// and a partly filled top cell rests on the cell below with its full weight.
-[[gnu::always_inline]] inline double hydrostatic_reconstruction(FaceState& s, double d_psi, double load, double carry) {
+inline __attribute__((always_inline)) double hydrostatic_reconstruction(FaceState& s, double d_psi, double load, double carry) {
     const double p = s.p, Phi = s.Phi, c2 = s.c * s.c;
     const double p_up = std::max(p - Phi * d_psi, carry);
     const double Phi_up = c2 > 0.0 ? std::max(0.0, Phi - std::max(0.0, p - p_up) / (c2 > 0.0 ? c2 : 1.0)) : 0.0;

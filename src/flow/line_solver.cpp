@@ -1,7 +1,8 @@
 #include "flow/line_solver.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
-#include <stdexcept>
 
 namespace granseg {
 
@@ -31,7 +32,7 @@ void LineSolver::factor(const Grid& grid, int axis, const std::vector<double>& l
     grid_ = &grid;
     axis_ = axis;
     const LineLayout L = layout(grid, axis);
-    if (L.n < 2) throw std::invalid_argument("LineSolver: axis with fewer than 2 cells");
+    if (L.n < 2) throw InputError("LineSolver: axis with fewer than 2 cells");
     cyclic_ = grid.periodic[axis] && L.n >= 3;
     const bool merged = grid.periodic[axis] && L.n == 2;  // both faces join the same two cells
     const std::size_t cells = grid.cells(), lines = L.n_outer * L.n_inner;

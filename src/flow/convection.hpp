@@ -1,0 +1,32 @@
+// The convective part of a step (eqs. 8, 9, 14 without viscosity, conduction and dissipation):
+// the face fluxes of one axis by the HLLC flux with hydrostatic reconstruction (flow/hllc.hpp;
+// walls are mirror states), and the conservative update of (Phi, Phi u, Phi T) from the fluxes
+// with the body forces the potential does not carry (Coriolis, gravity along inactive or
+// periodic axes) and optional source terms. docs/flow_solver.md Sect. 3.
+#pragma once
+
+#include "flow/flow_mesh.hpp"
+#include "flow/flow_settings.hpp"
+#include "flow/flow_state.hpp"
+#include "flow/frame.hpp"
+
+#include <vector>
+
+namespace granseg {
+
+/// Mass, momentum and energy fluxes, face pressure p* and fastest wave speed on every face of
+/// `axis` (HLLC between the hydrostatically reconstructed states of the two cells). On walls the
+/// mass, energy and tangential momentum fluxes are exactly 0.
+void hllc_face_fluxes(const FlowMesh& mesh, int axis, const FlowState& state, const CellClosures& closures,
+                      const Potential& psi, const AxisLoads& loads, AxisFaces& faces);
+
+/// Phi = Phi_before - dt sum_axis (M[upper] - M[lower])/h_axis (the coupling identity), the same
+/// for Phi u and Phi T with their fluxes; then gravity along inactive or periodic axes, the
+/// sources (if any) at time t, and Coriolis du/dt = 2 omega (u_z, -u_x) as a rotation of
+/// (u_x, u_z) by -2 omega dt (exact); finally u and T of the new state (Phi u is left unrotated:
+/// the implicit viscosity step rebuilds it from u).
+void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
+                     double t, double dt, const FlowFaces& faces, const std::vector<double>& Phi_before,
+                     FlowState& state);
+
+}  // namespace granseg
