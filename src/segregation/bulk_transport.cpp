@@ -10,6 +10,10 @@ namespace granseg {
 
 namespace {
 
+// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
+// flow solver's threshold, flow/flow_solver.cpp): loops run serially.
+constexpr std::size_t kParallelCells = 2048;
+
 void check_face_field(const Grid& grid, int axis, const std::vector<double>& field, const char* what) {
     if (!field.empty() && field.size() != grid.faces(axis))
         throw InputError(std::string("bulk transport: ") + what + " needs one value per face");
@@ -17,94 +21,109 @@ void check_face_field(const Grid& grid, int axis, const std::vector<double>& fie
 
 }  // namespace
 
-BulkTransport::BulkTransport(Grid grid) : grid_(std::move(grid)), inside_(grid_.cells(), 1) {
+BulkTransport::BulkTransport(Grid grid)
+    : grid_(std::move(grid)), inside_(grid_.cells(), 1), parallel_(grid_.cells() >= kParallelCells) {
     if (!grid_.inside.empty()) inside_ = grid_.inside;
 }
 
 void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, const std::vector<double>& inflow) {
     const Grid& g = grid_;
     std::vector<double>& G = G_[axis];
-    G.assign(g.faces(axis), 0.0);
+    G.resize(g.faces(axis));
     const std::size_t n = static_cast<std::size_t>(g.n[axis]), s = g.stride(axis), fs = g.face_stride(axis);
+    const std::size_t nx = g.n[0], ny = g.n[1], rows = ny * g.n[2];
     const double* hat = hat_.data();
+    const double* m = M.data();
+    double* G_out = G.data();
     const unsigned char* in = inside_.data();
+    // Faces between two cells of the grid, row by row along x: the face below cell U is f.
+    int through_wall = 0;
+#pragma omp parallel for reduction(| : through_wall) schedule(static) if (parallel_)
+    for (std::size_t r = 0; r < rows; ++r) {
+        const std::size_t j = r % ny, k = r / ny, layer = axis == 1 ? j : k;
+        const std::size_t f0 = g.face_index(axis, 0, static_cast<int>(j), static_cast<int>(k)), c0 = nx * r;
+        if (axis != 0 && layer == 0) continue;  // the row's faces along y or z lie on the domain boundary
+        for (std::size_t i = axis == 0 ? 1 : 0; i < nx; ++i) {
+            const std::size_t f = f0 + i, U = c0 + i, L = U - s;
+            G_out[f] = m[f] * (m[f] > 0.0 ? hat[L] : hat[U]);  // hat = 0 in outside cells
+            through_wall |= (m[f] != 0.0) & !(in[L] & in[U]);
+        }
+    }
     const auto wall_flux = [&](std::size_t face) {
         return InvariantError("bulk transport: mass flux " + std::to_string(M[face]) + " through a wall face (axis " +
                               std::to_string(axis) + ", face " + std::to_string(face) + ")");
     };
     // A face on the domain boundary: periodic (both cells given), wall, or open (in- or outflow).
     const auto boundary = [&](std::size_t f, std::size_t lower, std::size_t upper) {
-        const double m = M[f];
-        if (m == 0.0) return;
+        G[f] = 0.0;
+        if (M[f] == 0.0) return;
         const bool lower_in = lower != kNoCell && in[lower], upper_in = upper != kNoCell && in[upper];
         if (lower_in && upper_in) {
-            G[f] = m * hat[m > 0.0 ? lower : upper];
+            G[f] = M[f] * hat[M[f] > 0.0 ? lower : upper];
             return;
         }
         if ((lower != kNoCell && !lower_in) || (upper != kNoCell && !upper_in) || (!lower_in && !upper_in))
             throw wall_flux(f);
-        const bool outflow = lower_in ? m > 0.0 : m < 0.0;
+        const bool outflow = lower_in ? M[f] > 0.0 : M[f] < 0.0;
         if (!outflow && inflow.empty())
             throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
-        G[f] = m * (outflow ? hat[lower_in ? lower : upper] : inflow[f]);
+        G[f] = M[f] * (outflow ? hat[lower_in ? lower : upper] : inflow[f]);
     };
-    bool through_wall = false;
     for_each_line(g, axis, [&](std::size_t cell0, std::size_t face0) {
         const std::size_t last = cell0 + (n - 1) * s;
-        for (std::size_t l = 1; l < n; ++l) {  // faces between two cells of the line
-            const std::size_t f = face0 + l * fs, L = cell0 + (l - 1) * s, U = L + s;
-            const double m = M[f];
-            G[f] = m * (m > 0.0 ? hat[L] : hat[U]);  // hat = 0 in outside cells
-            through_wall |= m != 0.0 && !(in[L] && in[U]);
-        }
         const bool periodic = g.periodic[axis];
         boundary(face0, periodic ? last : kNoCell, cell0);
         boundary(face0 + n * fs, last, periodic ? cell0 : kNoCell);
+        if (through_wall)  // find the face for the message
+            for (std::size_t l = 1; l < n; ++l)
+                if (M[face0 + l * fs] != 0.0 && !(in[cell0 + (l - 1) * s] && in[cell0 + l * s])) throw wall_flux(face0 + l * fs);
     });
-    if (through_wall)  // find the face for the message
-        for_each_line(g, axis, [&](std::size_t cell0, std::size_t face0) {
-            for (std::size_t l = 1; l < n; ++l) {
-                const std::size_t f = face0 + l * fs, L = cell0 + (l - 1) * s;
-                if (M[f] != 0.0 && !(in[L] && in[L + s])) throw wall_flux(f);
-            }
-        });
 }
 
 double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRefs& M, const FaceFields& inflow_phi_hat,
                            double dt, std::vector<double>& phi, double Phi_min) {
     const Grid& g = grid_;
-    if (Phi_old.size() != g.cells() || phi.size() != g.cells())
+    const std::size_t cells = g.cells(), nx = g.n[0], ny = g.n[1], rows = ny * g.n[2];
+    if (Phi_old.size() != cells || phi.size() != cells)
         throw InputError("bulk transport: Phi_old and phi need one value per cell");
-    hat_.resize(g.cells());
-    for (std::size_t c = 0; c < g.cells(); ++c) hat_[c] = inside_[c] ? composition(phi[c], Phi_old[c]) : 0.0;
-    std::array<bool, 3> along{};  // axes that carry mass: more than one cell and a flux field
-    std::array<double, 3> inv_h{};
+    hat_.resize(cells);
+    const unsigned char* in = inside_.data();
+    const double* Phi = Phi_old.data();
+    double *hat = hat_.data(), *u = phi.data();
+#pragma omp parallel for schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0;
+    // The axes that carry mass (more than one cell and a flux field), in the order x, y, z.
+    int axes[3], along = 0;
+    double inv_h[3];
+    const double *G[3], *m[3];
     for (int axis = 0; axis < 3; ++axis) {  // every flux from the old phi: unsplit
-        along[axis] = g.n[axis] > 1 && M[axis] != nullptr && !M[axis]->empty();
-        inv_h[axis] = 1.0 / g.h[axis];
-        if (!along[axis]) continue;
+        if (g.n[axis] <= 1 || M[axis] == nullptr || M[axis]->empty()) continue;
         check_face_field(g, axis, *M[axis], "M");
         check_face_field(g, axis, inflow_phi_hat[axis], "inflow_phi_hat");
         donor_cell_fluxes(axis, *M[axis], inflow_phi_hat[axis]);
+        axes[along] = axis, inv_h[along] = 1.0 / g.h[axis], G[along] = G_[axis].data(), m[along] = M[axis]->data();
+        ++along;
     }
     // (eqs. 64, 65: F^bulk) in the mass balance's order: the net outflow first, then one subtraction.
-    double largest_rate = 0.0;  // max of sum_out |M|/(h Phi_old)
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int j = 0; j < g.n[1]; ++j)
-            for (int i = 0; i < g.n[0]; ++i) {
-                const std::size_t c = g.index(i, j, k);
-                if (!inside_[c]) continue;
-                double net = 0.0, out = 0.0;
-                for (int axis = 0; axis < 3; ++axis) {
-                    if (!along[axis]) continue;
-                    const std::size_t lower = g.face_index(axis, i, j, k), upper = lower + g.face_stride(axis);
-                    const std::vector<double>& m = *M[axis];
-                    net += (G_[axis][upper] - G_[axis][lower]) * inv_h[axis];
-                    out += (std::max(m[upper], 0.0) - std::min(m[lower], 0.0)) * inv_h[axis];
-                }
-                phi[c] = phi[c] - dt * net;
-                if (Phi_old[c] >= Phi_min && out > largest_rate * Phi_old[c]) largest_rate = out / Phi_old[c];
+    double largest_rate = 0.0;  // max of sum_out |M|/(h Phi_old) over cells with Phi_old >= Phi_min
+#pragma omp parallel for reduction(max : largest_rate) schedule(static) if (parallel_)
+    for (std::size_t r = 0; r < rows; ++r) {
+        const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
+        std::size_t lower[3], step[3];
+        for (int q = 0; q < along; ++q) lower[q] = g.face_index(axes[q], 0, j, k), step[q] = g.face_stride(axes[q]);
+        for (std::size_t i = 0; i < nx; ++i) {
+            const std::size_t c = nx * r + i;
+            if (!in[c]) continue;
+            double net = 0.0, out = 0.0;
+            for (int q = 0; q < along; ++q) {
+                const std::size_t fl = lower[q] + i, fu = fl + step[q];
+                net += (G[q][fu] - G[q][fl]) * inv_h[q];
+                out += (std::max(m[q][fu], 0.0) - std::min(m[q][fl], 0.0)) * inv_h[q];
             }
+            u[c] = u[c] - dt * net;
+            if (Phi[c] >= Phi_min && Phi[c] > 0.0 && out > largest_rate * Phi[c]) largest_rate = out / Phi[c];
+        }
+    }
     return dt * largest_rate;
 }
 

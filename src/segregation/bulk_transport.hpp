@@ -50,11 +50,12 @@ public:
                 std::vector<double>& phi, double Phi_min = 0.0);
 
 private:
-    /// G on the faces of `axis` (interior faces of a grid line vectorised, the rest face by face).
+    /// G on the faces of `axis`: the faces between two cells row by row, the domain boundary line by line.
     void donor_cell_fluxes(int axis, const std::vector<double>& M, const std::vector<double>& inflow);
 
     Grid grid_;
     std::vector<unsigned char> inside_;  // 1 for inside cells (grid.inside or all)
+    bool parallel_;                      // OpenMP threads over rows on larger grids
     std::vector<double> hat_;            // phi_hat of every cell before the step, 0 outside
     FaceFields G_;                       // G = M phi_hat(donor) per face
 };

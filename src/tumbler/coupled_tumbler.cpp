@@ -20,6 +20,10 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
     return std::chrono::duration<double>(b - a).count();
 }
 
+// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
+// flow solver's threshold): loops run serially.
+constexpr std::size_t kParallelCells = 2048;
+
 /// The flow settings with the initial mixture as the uniform phi_hat.
 FlowSettings with_mixture(FlowSettings settings, double mixture) {
     settings.phi_hat = mixture;
@@ -54,7 +58,10 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
       initial_(initial_mixture(setup)),
       flow_(setup.drum.grid(), setup.material, with_mixture(setup.flow, initial_.mean), setup.drum.frame()),
       bulk_(flow_.grid()),
-      segregation_(flow_.grid(), setup.segregation) {
+      segregation_(flow_.grid(), setup.segregation),
+      inside_(flow_.grid().cells(), 1),
+      parallel_(flow_.grid().cells() >= kParallelCells) {
+    if (!flow_.grid().inside.empty()) inside_ = flow_.grid().inside;
     if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
     if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("tumbler: bulk CFL outside (0, 1]");
     if (!preserves_bounds(setup.segregation.scheme))
@@ -75,11 +82,12 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
 }
 
 std::vector<double> CoupledTumbler::phi_hat() const {
-    const Grid& g = grid();
-    const std::vector<double>& Phi = flow_.Phi();
-    std::vector<double> hat(g.cells(), 0.0);
-    for (std::size_t c = 0; c < g.cells(); ++c)
-        if (g.is_inside(c)) hat[c] = composition(phi_[c], Phi[c]);
+    const std::size_t cells = grid().cells();
+    const unsigned char* in = inside_.data();
+    const double *Phi = flow_.Phi().data(), *phi = phi_.data();
+    std::vector<double> hat(cells);
+#pragma omp parallel for schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0;
     return hat;
 }
 
@@ -105,24 +113,35 @@ double CoupledTumbler::step(double t_end) {
 }
 
 void CoupledTumbler::clip_bulk_round_off() {
-    const Grid& g = grid();
-    const std::vector<double>&Phi = flow_.Phi(), &before = flow_.Phi_before();
-    for (std::size_t c = 0; c < g.cells(); ++c) {
-        if (!g.is_inside(c)) continue;
-        const double excess = phi_[c] - Phi[c], correction = std::max(excess, -phi_[c]);
-        max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, phi_[c]);
-        if (!(correction > 0.0)) {
-            if (std::isnan(correction)) throw InvariantError("tumbler: non-finite phi after the bulk step at t = " + format_number(time()));
-            continue;
-        }
-        // The donor-cell step keeps phi_hat in [0, 1] exactly; its rounding is a few ulps of the
-        // amounts that pass through the cell (invariants.hpp kBoundRoundOff).
-        if (correction > kBoundRoundOff * std::max(before[c], Phi[c]))
-            throw InvariantError("tumbler: the bulk step left 0 <= phi <= Phi by " + format_number(correction, 3) +
-                                 " (Phi = " + format_number(Phi[c]) + ") at cell " + std::to_string(c) + ", t = " +
-                                 format_number(time()) + " s");
-        largest_bulk_clip_ = std::max(largest_bulk_clip_, correction);
-        phi_[c] = std::clamp(phi_[c], 0.0, Phi[c]);
+    const std::size_t cells = grid().cells();
+    const unsigned char* in = inside_.data();
+    const double *Phi = flow_.Phi().data(), *before = flow_.Phi_before().data();
+    double* phi = phi_.data();
+    // The donor-cell step keeps phi_hat in [0, 1] exactly; its rounding is a few ulps of the amounts
+    // that pass through a cell: relative to the cell's larger Phi (before or after the step).
+    double excess = -INFINITY, lowest = INFINITY, worst = 0.0;  // worst: largest correction / allowance
+    long nonfinite = 0;
+#pragma omp parallel for reduction(max : excess, worst) reduction(min : lowest) reduction(+ : nonfinite) schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!in[c]) continue;
+        nonfinite += !std::isfinite(phi[c]);
+        excess = std::max(excess, phi[c] - Phi[c]), lowest = std::min(lowest, phi[c]);
+        const double correction = std::max(phi[c] - Phi[c], -phi[c]);
+        if (correction > 0.0) worst = std::max(worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
+    }
+    max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);
+    if (nonfinite > 0)
+        throw InvariantError("tumbler: non-finite phi after the bulk step at t = " + format_number(time()) + " (" +
+                             std::to_string(nonfinite) + " cells)");
+    if (!(excess > 0.0 || lowest < 0.0)) return;
+    if (worst > 1.0)
+        throw InvariantError("tumbler: the bulk step left 0 <= phi <= Phi by more than round-off (max phi - Phi " +
+                             format_number(excess, 3) + ", min phi " + format_number(lowest, 3) + ") at t = " +
+                             format_number(time()) + " s");
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!in[c]) continue;
+        largest_bulk_clip_ = std::max(largest_bulk_clip_, std::max(phi[c] - Phi[c], -phi[c]));
+        phi[c] = std::clamp(phi[c], 0.0, Phi[c]);
     }
 }
 

@@ -123,6 +123,8 @@ private:
     BulkTransport bulk_;
     FaceFields no_inflow_;  // closed drum: nothing enters through a domain boundary
     SegregationSolver segregation_;
+    std::vector<unsigned char> inside_;  // 1 for inside cells
+    bool parallel_;                      // OpenMP threads on the per-cell loops of larger grids
     FrozenFields frozen_;
     std::array<std::vector<double>, 3> d_s_;
     std::vector<double> phi_;
