@@ -20,8 +20,8 @@
 //     agree), so a changed number on the page fails this program.
 // The page must have at least one command block and one output block.
 //
-// Run: build/verification/verify_tutorial [--data DIR]   (about ten seconds: it runs what the
-// page runs; finds the page by walking up from its own directory, the CLI at build/granseg)
+// Run: build/verification/verify_tutorial [--data DIR]   (about 10 s of CPU time, most of it the
+// coupled drum of step 7; finds the page by walking up from its own directory, the CLI at build/granseg)
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 
@@ -170,10 +170,12 @@ int expected_status(const Block& b) {
     return at == std::string::npos ? 0 : std::stoi(b.info.substr(at + key.size()));
 }
 
-/// How many words and numbers two lines share, for pointing at the nearest printed line.
-std::size_t likeness(const Tokens& a, const Tokens& b) {
+/// How many words and numbers a printed line shares with the page's, for pointing at the nearest.
+std::size_t likeness(const Tokens& printed, const Tokens& page) {
     std::size_t n = 0;
-    for (std::size_t i = 0; i < std::min(a.words.size(), b.words.size()); ++i) n += a.words[i] == b.words[i];
+    for (std::size_t i = 0; i < std::min(printed.words.size(), page.words.size()); ++i) n += printed.words[i] == page.words[i];
+    for (std::size_t i = 0; i < std::min(printed.numbers.size(), page.numbers.size()); ++i)
+        n += std::fabs(printed.numbers[i] - page.numbers[i]) <= 0.5 * page.units[i];
     return n;
 }
 

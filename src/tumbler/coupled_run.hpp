@@ -7,6 +7,11 @@
 //     kTumblerMassTolerance relative of its start (both move only by face fluxes that telescope);
 //   - 0 <= phi <= Phi: the bulk step (CoupledTumbler) and the segregation sub-step
 //     (SegregationSolver) may clip only round-off, kBoundRoundOff Phi, checked at every step.
+//
+//   solves      nothing new: runs CoupledTumbler in time and writes its files
+//   inputs      the tumbler, CoupledRunOptions (t_end, snapshots, frames, the pattern regions)
+//   outputs     the OutputSet of the scene (history, summary, fields, frames)
+//   invariants  the list above, checked while it runs
 #pragma once
 
 #include "core/output.hpp"

@@ -1,6 +1,13 @@
 // The whole model in the drum of Sect. 4.2: the compressible flow (eqs. 8, 9, 14) and the
 // segregation equation (eq. 47) coupled both ways. Walk-through: docs/sect4.2_tumbler.md.
 //
+//   solves      eqs. (8), (9), (14) and (47) in the turning drum, coupled both ways, split as in eq. (65)
+//   inputs      CoupledTumblerSetup: the drum, the material, flow settings, S, the segregation options,
+//               Phi_min, bulk_cfl, packing feedback, phi_hat at t = 0
+//   outputs     after each step the flow's Phi, u, T and phi (phi_hat())
+//   invariants  the amount of each phase; 0 <= phi <= Phi after the bulk step and the segregation
+//               sub-step (round-off clips only); a uniform phi_hat stays uniform (coupled_run.hpp checks them)
+//
 // Everything is solved in the frame turning with the drum (the flow solver's frame, F5). One
 // step of the coupled model:
 //   1. flow step (FlowSolver::step): Phi, u, T from t to t + dt with the closures of the current

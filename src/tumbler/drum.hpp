@@ -1,6 +1,11 @@
 // The drum of Sect. 4.2 as the flow solver sees it, shared by the scene kinds tumbler-flow (flow
 // alone) and tumbler (flow and segregation coupled): the geometry and rotation, the bed at rest
 // it starts from (docs/assumptions.md F6, F8), and the dynamic angle of repose.
+//
+//   solves      nothing over time: the drum's geometry and the bed at rest it starts from
+//   inputs      DrumSpec (diameter, cells, fill height, rotation), the material, phi_hat
+//   outputs     the grid, each cell's filled share and lithostatic Phi; the mean angle of repose
+//   invariants  the bed at rest lies below its own Phi_rcp(phi_hat) in every cell (assumption C3)
 #pragma once
 
 #include "closures/material.hpp"

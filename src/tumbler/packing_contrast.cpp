@@ -30,15 +30,14 @@ PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_a
     };
     std::vector<Cell> cells;
     double top = -INFINITY;
-    for (int k = 0; k < g.n[2]; ++k)
-        for (int i = 0; i < g.n[0]; ++i) {
-            const std::size_t c = g.index(i, 0, k);
-            if (!g.is_inside(c) || !(s.Phi()[c] > o.bed_level)) continue;
-            const std::array<double, 2> X = s.frame().to_lab_position(s.time(), g.center(0, i), g.center(2, k));
-            const double height = nx * X[0] + nz * X[1];
-            top = std::max(top, height);
-            if (std::hypot(s.u(0)[c], s.u(2)[c]) <= o.v_flow) cells.push_back({height, s.Phi()[c], hat[c]});
-        }
+    for_each_bed_cell(g, [&](const BedCell& b) {
+        const std::size_t c = b.c;
+        if (!(s.Phi()[c] > o.bed_level)) return;
+        const std::array<double, 2> X = s.frame().to_lab_position(s.time(), b.x, b.z);
+        const double height = nx * X[0] + nz * X[1];
+        top = std::max(top, height);
+        if (std::hypot(s.u(0)[c], s.u(2)[c]) <= o.v_flow) cells.push_back({height, s.Phi()[c], hat[c]});
+    });
     std::map<long, std::array<Moments, 2>> bins;  // depth bin -> {mixed, pure}
     for (const Cell& c : cells) {
         const bool mixed = c.phi_hat > o.mixed_lo && c.phi_hat < o.mixed_hi;
