@@ -8,6 +8,9 @@
 //      c. in the flowing layer d_s is perpendicular to the velocity relative to the drum (angle
 //         statistics), and d_s is the same computed from the lab-frame velocity gradient and
 //         velocity as from the drum-frame ones the coupling uses;
+//      d. (coarse) the pattern has the paper's sense: the ring where the layer feeds the bed holds
+//         more small particles than the mixture, the periphery fewer (the full-resolution bounds
+//         are bench_tumbler's);
 //      and its files are the Fig. 7a-d data of `make verify` (DATA/tumbler).
 //   2. b. S = 0 with packing feedback, 5 s: phi_hat stays uniform to 1e-12 after every step, and
 //      Phi, u, T equal those of the flow solver run alone on the same drum (the tumbler-flow code
@@ -71,6 +74,12 @@ constexpr double kFrameRoundings = 16.0;
 //    contrast is at least twice that spread, and agrees with the packing law's prediction at
 //    the bins' mean pressure to within the spread.
 constexpr double kContrastSpreads = 2.0;
+
+// d (coarse). Small particles sink through the flowing layer and leave it at its bottom, into the
+//    streamlines of the ring; large ones ride on top and are laid down at the wall (Sect. 4.2,
+//    docs/sect4.2_tumbler_kinematic.md section 3). On the coarse grid only the sense is stated:
+//    ring above the mixture (1/2), periphery below it.
+constexpr double kMixture = 0.5;
 
 constexpr int kCells = 32;
 
@@ -271,6 +280,12 @@ int main(int argc, char** argv) {
     const OutputSet files = run_watched(t, scene, tumbler);
     for (const auto& [name, content] : files.files()) write_file_atomically(options.data_dir + "/tumbler/" + name, content);
     check_direction(t, tumbler, scene.run.regions.bed_level);
+    const PatternMetrics pattern = pattern_metrics(tumbler.grid(), tumbler.phi(), tumbler.flow().Phi(), scene.run.regions,
+                                                   std::vector<double>(tumbler.grid().cells(), kMixture));
+    t.note("d. pattern at t = 25 s: index " + verify::format(pattern.index) + ", ring " + verify::format(pattern.ring) +
+           ", periphery " + verify::format(pattern.periphery) + ", core " + verify::format(pattern.core));
+    t.at_least("d. small-particle fraction of the ring - the mixture's", pattern.ring - kMixture, 0.0);
+    t.at_most("d. small-particle fraction of the periphery - the mixture's", pattern.periphery - kMixture, 0.0);
     check_no_segregation(t);
     check_packing_contrast(t);
     return t.finish();
