@@ -130,6 +130,8 @@ std::vector<Case> cli_cases(const fs::path& out) {
     const std::string profiles = "Phi = \"0.62 - 0.08*cos(_pi*z)^2\"\nT = \"0.2 + 0.8*z\"\n";
     // Kinematic tumbler (issue 5): acceptance cases and the conditions between keys.
     const std::string tumbler = "[scene]\nkind = \"tumbler-kinematic\"\n" + dir;
+    // The coupled drum (issue 11, check g).
+    const std::string coupled = "[scene]\nkind = \"tumbler\"\n" + dir + "[run]\nt_end = 1\nangle_from = 0\n";
     const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
     const std::string closures = "closures --Phi 0.59 --phi-hat 0.4 --T 1e-4";
     return {
@@ -153,6 +155,18 @@ std::vector<Case> cli_cases(const fs::path& out) {
                   tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"),
         bad_scene("tumbler-kinematic, unknown bulk scheme", "[bulk] scheme:",
                   tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"),
+        bad_scene("tumbler, phi_hat > 1 on part of the bed", "[initial] phi_hat:",
+                  coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
+        bad_scene("tumbler, phi_hat < 0 at the bottom", "[initial] phi_hat:",
+                  coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"),
+        bad_scene("tumbler, S < 0", "[segregation] S:", coupled + "[segregation]\nS = -1\n"),
+        bad_scene("tumbler, unknown key", "[coupling] feedback:", coupled + "[coupling]\nfeedback = true\n"),
+        bad_scene("tumbler, [flow] phi_hat (the mixture comes from [initial])", "[flow] phi_hat:",
+                  coupled + "[flow]\nphi_hat = 0.5\n"),
+        bad_scene("tumbler, cells too coarse for the flowing layer", "[drum] cells_per_diameter:",
+                  coupled + "[drum]\ncells_per_diameter = 16\n"),
+        bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),
+        bad_scene("tumbler, Phi_min = 1", "[segregation] Phi_min:", coupled + "[segregation]\nPhi_min = 1\n"),
         bad_scene("segregation1d, phi = Phi + 0.01", "[initial] phi:",
                   column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"),
         bad_scene("segregation1d, cfl = 1.5", "[time] cfl:",
@@ -221,6 +235,15 @@ std::vector<Case> cli_cases(const fs::path& out) {
              tumbler + "[drum]\ncells_per_diameter = 20\nlayer_thickness = 0.01\n[time]\nend = 0.5\n",
              [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
                  t.count(l + ": tumbler_metrics.dat written", fs::exists(o / "tumbler_metrics.dat"), 1);
+             }),
+        good("run, valid tumbler scene", "run SCENE",
+             "[scene]\nkind = \"tumbler\"\n" + dir + "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n",
+             [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
+                 long written = 0;
+                 for (const char* name : {"history.dat", "summary.dat", "initial_lab.dat", "fields_lab.dat",
+                                          "frames/frame_002.dat", "vtk/tumbler_0000.vtk"})
+                     written += fs::exists(o / name);
+                 t.count(l + ": history, summary, fields, frames, VTK written", written, 6);
              }),
         good("closures, valid state", closures, "",
              [](CheckTable& t, const std::string& l, const Outcome& o, const fs::path&) {

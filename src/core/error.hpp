@@ -7,10 +7,9 @@
 //                 fields), or the code broke its own consistency (a bug: a Riemann problem
 //                 without a solution, a missing embedded file). The CLI prints it and exits
 //                 with status 3; no output is written.
-// The library throws nothing else (except src/flow/, which still throws std::invalid_argument
-// in 7 places): a bad value handed to any function is an InputError, so every entry point
-// (granseg, the verification programs through harness/program.hpp) ends with the one line and
-// exit status 2.
+// The library throws nothing else: a bad value handed to any function is an InputError, so every
+// entry point (granseg, the verification programs through harness/program.hpp) ends with the
+// one line and exit status 2.
 #pragma once
 
 #include <stdexcept>

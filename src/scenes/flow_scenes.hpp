@@ -8,11 +8,19 @@
 
 #include "flow/flow_solver.hpp"
 #include "scenes/scene_kind.hpp"
+#include "tumbler/drum.hpp"
 
 namespace granseg {
 
-/// Reads the optional [flow] section: time_stepping, cfl, T_floor, Phi_vacuum, dt_min, dt_max, phi_hat.
-FlowSettings read_flow_settings(const SceneFile& scene);
+/// Reads the optional [flow] section: time_stepping, cfl, T_floor, Phi_vacuum, dt_min, dt_max and, if `mixture`,
+/// phi_hat (a scene whose mixture comes from elsewhere leaves it out, so the key is rejected).
+FlowSettings read_flow_settings(const SceneFile& scene, bool mixture = true);
+
+/// The [drum] keys of tumbler-flow and tumbler (docs/scenes.md).
+DrumSpec read_drum(const SceneFile& scene);
+
+/// The [run] keys of tumbler-flow and tumbler.
+DrumRun read_drum_run(const SceneFile& scene);
 
 std::unique_ptr<SceneJob> prepare_bed_at_rest(const SceneFile& scene);
 std::unique_ptr<SceneJob> prepare_simple_shear(const SceneFile& scene);

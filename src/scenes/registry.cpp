@@ -3,6 +3,7 @@
 #include "scenes/flow_scenes.hpp"
 #include "scenes/scene_kind.hpp"
 #include "scenes/segregation1d.hpp"
+#include "scenes/tumbler.hpp"
 #include "scenes/tumbler_kinematic.hpp"
 
 namespace granseg {
@@ -17,6 +18,7 @@ const std::vector<SceneKind>& scene_kinds() {
         {"tumbler-flow", "the rotating drum of Sect. 4.2 without segregation (rotating frame)", prepare_tumbler_flow},
         {"tumbler-kinematic", "segregation in the drum of Sect. 4.2 on a prescribed rolling flow, Fig. 7a-c",
          prepare_tumbler_kinematic},
+        {"tumbler", "the whole model of Sect. 4.2: flow and segregation coupled in the drum, Fig. 7a-d", prepare_tumbler},
     };
     return kinds;
 }

@@ -10,58 +10,126 @@ namespace granseg {
 
 namespace {
 
+// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
+// flow solver's threshold, flow/flow_solver.cpp): loops run serially.
+constexpr std::size_t kParallelCells = 2048;
+
 void check_face_field(const Grid& grid, int axis, const std::vector<double>& field, const char* what) {
     if (!field.empty() && field.size() != grid.faces(axis))
         throw InputError(std::string("bulk transport: ") + what + " needs one value per face");
 }
 
-/// G = M phi_hat(donor) on every face of `axis` (see the header).
-std::vector<double> donor_cell_fluxes(const Grid& grid, int axis, const std::vector<double>& Phi_old,
-                                      const std::vector<double>& M, const std::vector<double>& inflow,
-                                      const std::vector<double>& phi) {
-    std::vector<double> G(grid.faces(axis), 0.0);
-    for_each_face(grid, axis, [&](const FaceCells& f) {
-        const double m = M[f.face];
-        if (m == 0.0) return;
-        const bool lower_in = f.lower != kNoCell && grid.is_inside(f.lower);
-        const bool upper_in = f.upper != kNoCell && grid.is_inside(f.upper);
-        if (lower_in && upper_in) {
-            const std::size_t donor = m > 0.0 ? f.lower : f.upper;
-            G[f.face] = m * composition(phi[donor], Phi_old[donor]);
-            return;
-        }
-        const bool wall = (f.lower != kNoCell && !lower_in) || (f.upper != kNoCell && !upper_in);
-        if (wall || (!lower_in && !upper_in))
-            throw InvariantError("bulk transport: mass flux " + std::to_string(m) + " through a wall face (axis " +
-                                 std::to_string(axis) + ", face " + std::to_string(f.face) + ")");
-        const bool outflow = lower_in ? m > 0.0 : m < 0.0;  // open domain boundary
-        if (outflow) {
-            const std::size_t donor = lower_in ? f.lower : f.upper;
-            G[f.face] = m * composition(phi[donor], Phi_old[donor]);
-        } else {
-            if (inflow.empty())
-                throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
-            G[f.face] = m * inflow[f.face];
-        }
-    });
-    return G;
+}  // namespace
+
+BulkTransport::BulkTransport(Grid grid)
+    : grid_(std::move(grid)), inside_(grid_.cells(), 1), parallel_(grid_.cells() >= kParallelCells) {
+    if (!grid_.inside.empty()) inside_ = grid_.inside;
 }
 
-}  // namespace
+void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, const std::vector<double>& inflow) {
+    const Grid& g = grid_;
+    std::vector<double>& G = G_[axis];
+    G.resize(g.faces(axis));
+    const std::size_t n = static_cast<std::size_t>(g.n[axis]), s = g.stride(axis), fs = g.face_stride(axis);
+    const std::size_t nx = g.n[0], ny = g.n[1], rows = ny * g.n[2];
+    const double* hat = hat_.data();
+    const double* m = M.data();
+    double* G_out = G.data();
+    const unsigned char* in = inside_.data();
+    // Faces between two cells of the grid, row by row along x: the face below cell U is f.
+    int through_wall = 0;
+#pragma omp parallel for reduction(| : through_wall) schedule(static) if (parallel_)
+    for (std::size_t r = 0; r < rows; ++r) {
+        const std::size_t j = r % ny, k = r / ny, layer = axis == 1 ? j : k;
+        const std::size_t f0 = g.face_index(axis, 0, static_cast<int>(j), static_cast<int>(k)), c0 = nx * r;
+        if (axis != 0 && layer == 0) continue;  // the row's faces along y or z lie on the domain boundary
+        for (std::size_t i = axis == 0 ? 1 : 0; i < nx; ++i) {
+            const std::size_t f = f0 + i, U = c0 + i, L = U - s;
+            G_out[f] = m[f] * (m[f] > 0.0 ? hat[L] : hat[U]);  // hat = 0 in outside cells
+            through_wall |= (m[f] != 0.0) & !(in[L] & in[U]);
+        }
+    }
+    const auto wall_flux = [&](std::size_t face) {
+        return InvariantError("bulk transport: mass flux " + std::to_string(M[face]) + " through a wall face (axis " +
+                              std::to_string(axis) + ", face " + std::to_string(face) + ")");
+    };
+    // A face on the domain boundary: periodic (both cells given), wall, or open (in- or outflow).
+    const auto boundary = [&](std::size_t f, std::size_t lower, std::size_t upper) {
+        G[f] = 0.0;
+        if (M[f] == 0.0) return;
+        const bool lower_in = lower != kNoCell && in[lower], upper_in = upper != kNoCell && in[upper];
+        if (lower_in && upper_in) {
+            G[f] = M[f] * hat[M[f] > 0.0 ? lower : upper];
+            return;
+        }
+        if ((lower != kNoCell && !lower_in) || (upper != kNoCell && !upper_in) || (!lower_in && !upper_in))
+            throw wall_flux(f);
+        const bool outflow = lower_in ? M[f] > 0.0 : M[f] < 0.0;
+        if (!outflow && inflow.empty())
+            throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
+        G[f] = M[f] * (outflow ? hat[lower_in ? lower : upper] : inflow[f]);
+    };
+    for_each_line(g, axis, [&](std::size_t cell0, std::size_t face0) {
+        const std::size_t last = cell0 + (n - 1) * s;
+        const bool periodic = g.periodic[axis];
+        boundary(face0, periodic ? last : kNoCell, cell0);
+        boundary(face0 + n * fs, last, periodic ? cell0 : kNoCell);
+        if (through_wall)  // find the face for the message
+            for (std::size_t l = 1; l < n; ++l)
+                if (M[face0 + l * fs] != 0.0 && !(in[cell0 + (l - 1) * s] && in[cell0 + l * s])) throw wall_flux(face0 + l * fs);
+    });
+}
+
+double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRefs& M, const FaceFields& inflow_phi_hat,
+                           double dt, std::vector<double>& phi, double Phi_min) {
+    const Grid& g = grid_;
+    const std::size_t cells = g.cells(), nx = g.n[0], ny = g.n[1], rows = ny * g.n[2];
+    if (Phi_old.size() != cells || phi.size() != cells)
+        throw InputError("bulk transport: Phi_old and phi need one value per cell");
+    hat_.resize(cells);
+    const unsigned char* in = inside_.data();
+    const double* Phi = Phi_old.data();
+    double *hat = hat_.data(), *u = phi.data();
+#pragma omp parallel for schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0;
+    // The axes that carry mass (more than one cell and a flux field), in the order x, y, z.
+    int axes[3], along = 0;
+    double inv_h[3];
+    const double *G[3], *m[3];
+    for (int axis = 0; axis < 3; ++axis) {  // every flux from the old phi: unsplit
+        if (g.n[axis] <= 1 || M[axis] == nullptr || M[axis]->empty()) continue;
+        check_face_field(g, axis, *M[axis], "M");
+        check_face_field(g, axis, inflow_phi_hat[axis], "inflow_phi_hat");
+        donor_cell_fluxes(axis, *M[axis], inflow_phi_hat[axis]);
+        axes[along] = axis, inv_h[along] = 1.0 / g.h[axis], G[along] = G_[axis].data(), m[along] = M[axis]->data();
+        ++along;
+    }
+    // (eqs. 64, 65: F^bulk) in the mass balance's order: the net outflow first, then one subtraction.
+    double largest_rate = 0.0;  // max of sum_out |M|/(h Phi_old) over cells with Phi_old >= Phi_min
+#pragma omp parallel for reduction(max : largest_rate) schedule(static) if (parallel_)
+    for (std::size_t r = 0; r < rows; ++r) {
+        const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
+        std::size_t lower[3], step[3];
+        for (int q = 0; q < along; ++q) lower[q] = g.face_index(axes[q], 0, j, k), step[q] = g.face_stride(axes[q]);
+        for (std::size_t i = 0; i < nx; ++i) {
+            const std::size_t c = nx * r + i;
+            if (!in[c]) continue;
+            double net = 0.0, out = 0.0;
+            for (int q = 0; q < along; ++q) {
+                const std::size_t fl = lower[q] + i, fu = fl + step[q];
+                net += (G[q][fu] - G[q][fl]) * inv_h[q];
+                out += (std::max(m[q][fu], 0.0) - std::min(m[q][fl], 0.0)) * inv_h[q];
+            }
+            u[c] = u[c] - dt * net;
+            if (Phi[c] >= Phi_min && Phi[c] > 0.0 && out > largest_rate * Phi[c]) largest_rate = out / Phi[c];
+        }
+    }
+    return dt * largest_rate;
+}
 
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
                     const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi) {
-    if (Phi_old.size() != grid.cells() || phi.size() != grid.cells())
-        throw InputError("bulk transport: Phi_old and phi need one value per cell");
-    FaceFields G;
-    for (int axis = 0; axis < 3; ++axis) {  // every flux from the old phi: unsplit
-        if (M[axis].empty()) continue;
-        check_face_field(grid, axis, M[axis], "M");
-        check_face_field(grid, axis, inflow_phi_hat[axis], "inflow_phi_hat");
-        G[axis] = donor_cell_fluxes(grid, axis, Phi_old, M[axis], inflow_phi_hat[axis], phi);
-    }
-    for (int axis = 0; axis < 3; ++axis)
-        if (!G[axis].empty()) apply_flux_difference(grid, axis, G[axis], dt, phi);  // (eqs. 64, 65: F^bulk)
+    BulkTransport(grid).step(Phi_old, refs(M), inflow_phi_hat, dt, phi);
 }
 
 void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi) {
@@ -72,21 +140,22 @@ void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::ve
         }
 }
 
-double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M, double cfl) {
+double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFieldRefs& M, double cfl,
+                      double Phi_min) {
     std::vector<double> outflow(grid.cells(), 0.0);  // sum_out |M|/h per cell
     for (int axis = 0; axis < 3; ++axis) {
-        if (M[axis].empty()) continue;
-        check_face_field(grid, axis, M[axis], "M");
+        if (M[axis] == nullptr || M[axis]->empty()) continue;
+        check_face_field(grid, axis, *M[axis], "M");
         for_each_face(grid, axis, [&](const FaceCells& f) {
             if (f.duplicate) return;  // the last layer of a periodic axis is the first one
-            const double m = M[axis][f.face] / grid.h[axis];
+            const double m = (*M[axis])[f.face] / grid.h[axis];
             if (m > 0.0 && f.lower != kNoCell) outflow[f.lower] += m;
             if (m < 0.0 && f.upper != kNoCell) outflow[f.upper] -= m;
         });
     }
     double dt = std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < grid.cells(); ++c)
-        if (grid.is_inside(c) && outflow[c] > 0.0) dt = std::min(dt, Phi_old[c] / outflow[c]);
+        if (grid.is_inside(c) && outflow[c] > 0.0 && Phi_old[c] >= Phi_min) dt = std::min(dt, Phi_old[c] / outflow[c]);
     return cfl * dt;
 }
 

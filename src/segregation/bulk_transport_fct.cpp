@@ -7,7 +7,7 @@
 
 namespace granseg {
 
-FctBulkTransport::FctBulkTransport(Grid grid) : grid_(std::move(grid)) {
+FctBulkTransport::FctBulkTransport(Grid grid) : grid_(std::move(grid)), donor_(grid_) {
     for (int axis = 0; axis < 3; ++axis)
         for_each_face(grid_, axis, [&](const FaceCells& f) {
             // A periodic axis's last face layer repeats its first: count it once.
@@ -21,7 +21,7 @@ void FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vecto
     if (Phi_new.size() != cells) throw InputError("bulk transport: Phi_new needs one value per cell");
     hat_old_.resize(cells), hat_td_.resize(cells), hi_.resize(cells), lo_.resize(cells);
     for (std::size_t c = 0; c < cells; ++c) hat_old_[c] = composition(phi[c], Phi_old[c]);
-    transport_bulk(grid_, Phi_old, M, inflow_phi_hat, dt, phi);  // the donor-cell (low-order) solution
+    donor_.step(Phi_old, refs(M), inflow_phi_hat, dt, phi);  // the donor-cell (low-order) solution
     for (std::size_t c = 0; c < cells; ++c) {
         hat_td_[c] = composition(phi[c], Phi_new[c]);
         hi_[c] = std::max(hat_old_[c], hat_td_[c]), lo_[c] = std::min(hat_old_[c], hat_td_[c]);

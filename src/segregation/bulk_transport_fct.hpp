@@ -37,6 +37,7 @@ public:
 
 private:
     Grid grid_;
+    BulkTransport donor_;  // the low-order (donor-cell) step
     struct OpenFace {
         std::size_t lower, upper, face;
         int axis;

@@ -10,12 +10,12 @@ namespace granseg {
 
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial) {
-    if (grid.n[1] != 1) throw InputError("pattern metrics: needs a grid in the x-z plane");
     double small[3] = {0, 0, 0}, all[3] = {0, 0, 0}, bed_small = 0, bed_all = 0, sum = 0, sum2 = 0;
     long count = 0;
     PatternMetrics m;
     for_each_bed_cell(grid, [&](const BedCell& b) {
         const std::size_t c = b.c;
+        if (!(Phi[c] > regions.bed_level)) return;
         const double r = std::hypot(b.x, b.z);  // distance from the drum centre
         const int region = r < regions.r_core ? 0 : r < regions.r_ring ? 1 : r >= regions.r_periphery ? 2 : -1;
         const double phi_hat = composition(phi[c], Phi[c]);
@@ -26,7 +26,9 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         ++count;
     });
     const double mean = sum / count;
-    for_each_bed_cell(grid, [&](const BedCell& b) { sum2 += std::pow(composition(phi[b.c], Phi[b.c]) - mean, 2); });  // two passes: no cancellation
+    for_each_bed_cell(grid, [&](const BedCell& b) {  // two passes: no cancellation
+        if (Phi[b.c] > regions.bed_level) sum2 += std::pow(composition(phi[b.c], Phi[b.c]) - mean, 2);
+    });
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const auto fraction = [&](int region) { return all[region] > 0.0 ? small[region] / all[region] : nan; };
     m.core = fraction(0), m.ring = fraction(1), m.periphery = fraction(2);
@@ -36,14 +38,23 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
     return m;
 }
 
+PatternRegions drum_regions(double d, double delta0, double R) {
+    PatternRegions r;
+    r.r_core = d - delta0;
+    r.r_ring = d;
+    r.r_periphery = 0.8 * R;
+    return r;
+}
+
 ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
-                           double radius, int shells) {
+                           double radius, int shells, double bed_level) {
     if (shells < 1 || !(radius > 0.0)) throw InputError("shell profile: needs shells >= 1 and radius > 0");
     std::vector<double> r_sum(shells, 0.0), small(shells, 0.0), all(shells, 0.0);
     ShellProfile p;
     p.cells.assign(shells, 0);
     for_each_bed_cell(grid, [&](const BedCell& b) {
         const std::size_t c = b.c;
+        if (!(Phi[c] > bed_level)) return;
         const double r = std::hypot(b.x, b.z);
         const int s = std::min(shells - 1, static_cast<int>(r / radius * shells));
         r_sum[s] += r, small[s] += phi[c], all[s] += Phi[c], ++p.cells[s];

@@ -1,5 +1,7 @@
 // Measures of the segregation pattern in the drum (docs/sect4.2_tumbler_kinematic.md, section 3).
 //
+// Bed cells: inside cells with Phi > bed_level (the kinematic drum's grid holds only bed cells, so
+// 0 there; in the coupled drum the level of the free surface, Phi_co/2, leaves out the air).
 // Regions, by the distance r of a bed-cell centre from the drum centre (inertial frame):
 //   core       r < r_core:              solid-body streamlines that never reach the flowing layer
 //   ring       r_core <= r < r_ring:    the streamlines just below the layer's deepest point
@@ -18,7 +20,14 @@ namespace granseg {
 
 struct PatternRegions {
     double r_core = 0, r_ring = 0, r_periphery = 0;  // m
+    double bed_level = 0;                             // a bed cell has Phi > bed_level
 };
+
+/// The regions of a drum of radius R whose free surface passes at distance d from the centre, on
+/// a flowing layer of thickness delta0 at the middle of the surface: r_core = d - delta0 (the
+/// layer bottom's closest approach to the centre), r_ring = d (circles below r = d lie wholly in
+/// the bed), r_periphery = 0.8 R (docs/sect4.2_tumbler_kinematic.md, section 3; assumption T4).
+PatternRegions drum_regions(double d, double delta0, double R);
 
 struct PatternMetrics {
     double core = 0, ring = 0, periphery = 0;  // small-particle fraction of each region (NaN if empty)
@@ -27,8 +36,8 @@ struct PatternMetrics {
     double core_deviation = 0;                 // max |phi_hat - phi_hat_initial| over the core cells
 };
 
-/// The metrics of phi on the bed cells of `grid` (drum centre at the origin). phi_hat_initial:
-/// per cell, for core_deviation.
+/// The metrics of phi on the bed cells of `grid` (drum centre at the origin; a slab: its slice
+/// j = 0). phi_hat_initial: per cell, for core_deviation.
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial);
 
@@ -39,6 +48,6 @@ struct ShellProfile {
     std::vector<long> cells;
 };
 ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
-                           double radius, int shells);
+                           double radius, int shells, double bed_level = 0.0);
 
 }  // namespace granseg

@@ -86,12 +86,7 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
 }
 
 PatternRegions default_regions(const RollingDrumFlow& flow) {
-    PatternRegions r;
-    const double d = flow.surface_distance(), delta0 = flow.parameters().layer_thickness, R = flow.radius();
-    r.r_core = d - delta0;  // the layer bottom's closest approach to the centre (at s = 0)
-    r.r_ring = d;           // circles below r = d lie wholly in the bed
-    r.r_periphery = 0.8 * R;
-    return r;
+    return drum_regions(flow.surface_distance(), flow.parameters().layer_thickness, flow.radius());
 }
 
 }  // namespace granseg

@@ -27,10 +27,15 @@ DataTable drum_outline(const RollingDrumFlow& flow) {
     return outline;
 }
 
-DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what) {
+DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what,
+                            const std::function<bool(std::size_t)>& bed, const InertialPosition& where) {
     DataTable cells({"x", "z", "phi_hat"});
     cells.comment(what + " (bed cells, inertial frame, m; cell size " + format_number(grid.h[0]) + " m)");
-    for_each_bed_cell(grid, [&](const BedCell& b) { cells.row({b.x, b.z, phi_hat[b.c]}); });
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        if (bed && !bed(b.c)) return;
+        const std::array<double, 2> xz = where ? where(b.x, b.z) : std::array<double, 2>{b.x, b.z};
+        cells.row({xz[0], xz[1], phi_hat[b.c]});
+    });
     return cells;
 }
 

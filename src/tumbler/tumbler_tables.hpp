@@ -6,6 +6,8 @@
 #include "tumbler/kinematic_tumbler.hpp"
 #include "tumbler/tumbler_run.hpp"
 
+#include <array>
+#include <functional>
 #include <vector>
 
 namespace granseg {
@@ -13,8 +15,14 @@ namespace granseg {
 /// Drum wall (index 0), free surface (index 1) and the bottom of the flowing layer (index 2).
 DataTable drum_outline(const RollingDrumFlow& flow);
 
-/// One row per bed cell: x z phi_hat (from phi_hat, a cell field).
-DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what);
+/// Where a cell of the slice j = 0 is drawn: its centre (x, z) mapped to the inertial frame (the
+/// coupled drum's grid turns with the drum; the kinematic drum's grid is inertial: no mapping).
+using InertialPosition = std::function<std::array<double, 2>(double x, double z)>;
+
+/// One row per bed cell: x z phi_hat (from phi_hat, a cell field). Bed cells: the inside cells,
+/// or those `bed` accepts if given; positions mapped by `where` if given.
+DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what,
+                            const std::function<bool(std::size_t)>& bed = {}, const InertialPosition& where = {});
 
 /// One row per bed cell: x z in_layer ux uz ds_x ds_z T a_x a_z (the steady fields of the run).
 DataTable tumbler_flow_cells(const KinematicTumbler& tumbler);

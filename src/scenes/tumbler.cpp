@@ -1,0 +1,81 @@
+#include "scenes/tumbler.hpp"
+
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "scenes/flow_scenes.hpp"
+#include "scenes/material_section.hpp"
+
+#include <cmath>
+
+namespace granseg {
+
+namespace {
+
+struct Tumbler : SceneJob {
+    TumblerScene scene;
+
+    OutputSet run() override {
+        CoupledTumbler tumbler(scene.setup);
+        return run_coupled_tumbler(tumbler, scene.run);
+    }
+};
+
+}  // namespace
+
+int min_tumbler_cells() { return static_cast<int>(std::ceil(2.0 / kLayerShare)); }
+
+TumblerScene read_tumbler(const SceneFile& scene) {
+    TumblerScene t;
+    CoupledTumblerSetup& s = t.setup;
+    s.material = read_material(scene);
+    s.flow = read_flow_settings(scene, false);
+    s.drum = read_drum(scene);
+    if (s.drum.cells_per_diameter < min_tumbler_cells())
+        scene.fail("drum", "cells_per_diameter",
+                   std::to_string(s.drum.cells_per_diameter) + " cells leave the flowing layer (about " +
+                       format_number(kLayerShare * s.drum.diameter) + " m thick) unresolved",
+                   "cells_per_diameter >= " + std::to_string(min_tumbler_cells()));
+    t.run.run = read_drum_run(scene);
+    t.run.frames = static_cast<int>(scene.integer("run", "frames", 0, 1000, t.run.frames));
+
+    const std::string seg = "segregation";
+    s.S = scene.number(seg, "S", Range::at_least(0), s.S);
+    s.segregation.scheme = parse_scheme(scene.choice(seg, "scheme", scheme_names(), "modified-godunov"));
+    if (!preserves_bounds(s.segregation.scheme))
+        scene.fail(seg, "scheme", "\"" + scheme_name(s.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
+                   bounded_scheme_names());
+    s.segregation.limiter = parse_limiter(scene.choice(seg, "limiter", limiter_names(), "mc"));
+    s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
+    s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);
+    s.packing_feedback = scene.flag("coupling", "packing_feedback", s.packing_feedback);
+    s.bulk_cfl = scene.number("coupling", "bulk_cfl", Range::left_open(0, 1), s.bulk_cfl);
+    const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
+    s.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
+
+    // Cross-key conditions on the initial bed: phi_hat0 in [0, 1] wherever the drum holds material,
+    // and (packing feedback) the bed below Phi_rcp(phi_hat0) in every cell, which building the
+    // drum checks (FlowSolver::set_state).
+    const Grid grid = s.drum.grid();
+    const std::vector<double> fill = drum_fill_fraction(s.drum, grid);
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        const double v = s.phi_hat0(b.x, b.z);
+        if (fill[b.c] > 0.0 && !(v >= 0.0 && v <= 1.0))
+            scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+                       "0 <= phi_hat <= 1 wherever the drum holds material");
+    });
+    try {
+        const CoupledTumbler probe(s);
+        t.run.regions = coupled_regions(s.drum, surface_level(s.material, probe.initial_mixture()));
+    } catch (const InvariantError& e) {
+        scene.fail("initial", "phi_hat", e.what(), "a mixture whose Phi_rcp(phi_hat) lies above the initial bed's Phi");
+    }
+    return t;
+}
+
+std::unique_ptr<SceneJob> prepare_tumbler(const SceneFile& scene) {
+    auto job = std::make_unique<Tumbler>();
+    job->scene = read_tumbler(scene);
+    return job;
+}
+
+}  // namespace granseg

@@ -1,0 +1,31 @@
+// Scene kind "tumbler": the whole model of Sect. 4.2, flow and segregation coupled in the drum
+// (src/tumbler/coupled_tumbler.hpp), Fig. 7a-d. Keys: docs/scenes.md; outputs: history.dat,
+// summary.dat, initial_lab.dat, fields_lab.dat, frames/frame_NNN.dat, vtk/tumbler_NNNN.vtk
+// (src/tumbler/coupled_run.hpp).
+#pragma once
+
+#include "scenes/scene_kind.hpp"
+#include "tumbler/coupled_run.hpp"
+#include "tumbler/coupled_tumbler.hpp"
+
+namespace granseg {
+
+/// Everything a tumbler scene file says, validated (shared with verify_tumbler, which runs its
+/// scenes through the same code path).
+struct TumblerScene {
+    CoupledTumblerSetup setup;
+    CoupledRunOptions run;
+};
+
+/// Reads and validates every key of a tumbler scene (scene.fail on a bad value), including the
+/// initial bed: phi_hat in [0, 1] wherever there is material and, with packing feedback, the bed
+/// below Phi_rcp(phi_hat) in every cell.
+TumblerScene read_tumbler(const SceneFile& scene);
+
+/// Smallest cells_per_diameter of a tumbler scene: the flowing layer, kLayerShare D thick at the
+/// middle of the surface, must span two cells (assumption C4).
+int min_tumbler_cells();
+
+std::unique_ptr<SceneJob> prepare_tumbler(const SceneFile& scene);
+
+}  // namespace granseg

@@ -1,0 +1,142 @@
+#include "tumbler/coupled_run.hpp"
+
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "core/progress.hpp"
+#include "flow/flow_output.hpp"
+#include "segregation/invariants.hpp"
+#include "tumbler/coupled_tables.hpp"
+#include "tumbler/packing_contrast.hpp"
+#include "tumbler/tumbler_run.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace granseg {
+
+namespace {
+
+/// Amount of each phase over the drum: sum of phi and of Phi - phi times the cell volume.
+std::array<double, 2> phase_amounts(const CoupledTumbler& t) {
+    const std::vector<double>& Phi = t.flow().Phi();
+    std::vector<double> large(Phi.size());
+    for (std::size_t c = 0; c < Phi.size(); ++c) large[c] = Phi[c] - t.phi()[c];
+    return {total_amount(t.grid(), t.phi()), total_amount(t.grid(), large)};
+}
+
+long inside_cells(const Grid& g) {
+    long n = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) n += g.is_inside(c);
+    return n;
+}
+
+std::string numbered(const char* pattern, int n) {
+    char name[64];
+    std::snprintf(name, sizeof name, pattern, n);
+    return name;
+}
+
+}  // namespace
+
+PatternRegions coupled_regions(const DrumSpec& drum, double bed_level) {
+    PatternRegions r = drum_regions(drum.surface_height(), kLayerShare * drum.diameter, drum.radius());
+    r.bed_level = bed_level;
+    return r;
+}
+
+OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,
+                              const CoupledStepObserver& observer) {
+    const DrumSpec& drum = tumbler.setup().drum;
+    const FlowSolver& flow = tumbler.flow();
+    const Grid& grid = tumbler.grid();
+    const double t_end = options.run.t_end, level = options.regions.bed_level, v_flow = drum.flowing_speed();
+    const double Phi_max = 1.0;  // Phi < Phi_rcp < 1 (closures)
+    OutputSet out;
+    out.add("initial_lab.dat", coupled_field_table(tumbler));
+    const std::vector<double> hat0 = tumbler.phi_hat();
+    const std::array<double, 2> amount0 = phase_amounts(tumbler);
+
+    DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
+                       "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
+                       "substeps", "dt"});
+    history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes relative to t = 0); "
+                    "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
+                    format_number(level) + "; surface angle: fit of the Phi = " + format_number(level) +
+                    " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) + " m/s");
+    AngleOfRepose angle(options.run.angle_from);
+    BoundsMonitor bounds;
+    double small_change = 0, large_change = 0, surface_angle = 0;
+    PatternMetrics metrics;
+    int snapshot = 0, frame = 0;
+    double next_history = 0.0, next_snapshot = 0.0, next_frame = 0.0;
+    const double frame_every = options.frames > 0 ? t_end / options.frames : INFINITY;
+    const auto due = [&](double next) { return flow.time() >= next - 1e-12 || flow.time() >= t_end; };
+    const auto sample = [&] {
+        if (!due(next_history) && !(options.run.vtk && due(next_snapshot)) && !due(next_frame)) return;
+        tumbler.synchronise();
+        if (due(next_history)) {
+            next_history += kDrumHistoryInterval;
+            const std::array<double, 2> amount = phase_amounts(tumbler);
+            small_change = amount[0] / amount0[0] - 1.0, large_change = amount[1] / amount0[1] - 1.0;
+            bounds.observe(grid, tumbler.phi(), flow.Phi());
+            check_segregation_invariants("tumbler", bounds, tumbler.largest_correction(), amount0[0], amount[0],
+                                         kTumblerMassTolerance, true, Phi_max);
+            if (!(std::fabs(large_change) <= kTumblerMassTolerance))
+                throw InvariantError("tumbler: the amount of large particles changed by " + format_number(large_change, 3) +
+                                     " (relative) by t = " + format_number(flow.time()) + " s");
+            const DrumState d = drum_state(flow, level, 0.8 * drum.radius(), v_flow);
+            surface_angle = d.surface_angle_deg;
+            angle.add(flow.time(), surface_angle);
+            metrics = pattern_metrics(grid, tumbler.phi(), flow.Phi(), options.regions, hat0);
+            history.row({flow.time(), static_cast<double>(flow.steps()), amount[0], amount[1], metrics.index, surface_angle,
+                         metrics.ring, metrics.periphery, metrics.core, small_change, large_change, d.flowing_fraction,
+                         d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt()});
+        }
+        if (options.run.vtk && due(next_snapshot)) {
+            next_snapshot += options.run.snapshot_every;
+            out.add(numbered("vtk/tumbler_%04d.vtk", snapshot++), coupled_vtk(tumbler));
+        }
+        if (due(next_frame)) {
+            next_frame += frame_every;
+            out.add(numbered("frames/frame_%03d.dat", frame++), coupled_composition(tumbler, level));
+        }
+    };
+    sample();
+    Progress progress("tumbler", t_end);
+    while (flow.time() < t_end) {
+        tumbler.step(t_end);
+        if (observer) observer(tumbler);
+        sample();
+        progress.update(flow.time());
+    }
+    progress.finish();
+
+    PackingContrastOptions contrast_options;
+    contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
+    const PackingContrast contrast = packing_contrast(tumbler, surface_angle, contrast_options);
+    DataTable summary({"t_end", "steps", "substeps", "segregation_steps", "angle_mean_deg", "angle_std_deg", "angle_samples",
+                       "mass_small_change", "mass_large_change", "segregation_index", "ring", "periphery", "core",
+                       "initial_mixture", "packing_feedback", "packing_contrast", "packing_spread", "contrast_bins",
+                       "largest_bulk_clip", "largest_segregation_clip", "seconds_flow", "seconds_bulk",
+                       "seconds_segregation", "seconds_feedback", "inside_cells"});
+    summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
+                    " s; pattern metrics at t_end (regions r_core " + format_number(options.regions.r_core) + ", r_ring " +
+                    format_number(options.regions.r_ring) + ", r_periphery " + format_number(options.regions.r_periphery) +
+                    " m); packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
+                    " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
+                    "transport, segregation sub-steps, closures from phi_hat)");
+    summary.row({flow.time(), static_cast<double>(flow.steps()), static_cast<double>(tumbler.segregation_substeps()),
+                 static_cast<double>(tumbler.segregation_steps()), angle.mean(), angle.std_dev(),
+                 static_cast<double>(angle.samples()), small_change, large_change, metrics.index, metrics.ring,
+                 metrics.periphery, metrics.core, tumbler.initial_mixture(),
+                 tumbler.setup().packing_feedback ? 1.0 : 0.0, contrast.contrast, contrast.spread,
+                 static_cast<double>(contrast.bins), tumbler.largest_bulk_clip(), tumbler.largest_correction(),
+                 tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
+                 static_cast<double>(inside_cells(grid))});
+    out.add("history.dat", history);
+    out.add("summary.dat", summary);
+    out.add("fields_lab.dat", coupled_field_table(tumbler));
+    return out;
+}
+
+}  // namespace granseg

@@ -1,0 +1,187 @@
+#include "tumbler/coupled_tumbler.hpp"
+
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "direction/segregation_direction.hpp"
+#include "direction/segregation_velocity.hpp"
+#include "segregation/invariants.hpp"
+#include "segregation/reconstruction.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace granseg {
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
+
+// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
+// flow solver's threshold): loops run serially.
+constexpr std::size_t kParallelCells = 2048;
+
+/// The flow settings with the initial mixture as the uniform phi_hat.
+FlowSettings with_mixture(FlowSettings settings, double mixture) {
+    settings.phi_hat = mixture;
+    return settings;
+}
+
+}  // namespace
+
+CoupledTumbler::InitialMixture CoupledTumbler::initial_mixture(const CoupledTumblerSetup& setup) {
+    const Grid grid = setup.drum.grid();
+    const std::vector<double> fill = drum_fill_fraction(setup.drum, grid);
+    InitialMixture m{std::vector<double>(grid.cells(), 0.0), 0.0};
+    double filled = 0.0;
+    for (int k = 0; k < grid.n[2]; ++k)
+        for (int j = 0; j < grid.n[1]; ++j)
+            for (int i = 0; i < grid.n[0]; ++i) {
+                const std::size_t c = grid.index(i, j, k);
+                if (!(fill[c] > 0.0)) continue;
+                const double x = grid.center(0, i), z = grid.center(2, k), v = setup.phi_hat0(x, z);
+                if (!(v >= 0.0 && v <= 1.0))
+                    throw InputError("tumbler: initial phi_hat = " + format_number(v) + " at x = " +
+                                                format_number(x) + ", z = " + format_number(z) + " outside [0, 1]");
+                m.phi_hat[c] = v;
+                m.mean += fill[c] * v, filled += fill[c];  // (assumption C3)
+            }
+    m.mean /= filled;
+    return m;
+}
+
+CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
+    : setup_(setup),
+      initial_(initial_mixture(setup)),
+      flow_(setup.drum.grid(), setup.material, with_mixture(setup.flow, initial_.mean), setup.drum.frame()),
+      bulk_(flow_.grid()),
+      segregation_(flow_.grid(), setup.segregation),
+      inside_(flow_.grid().cells(), 1),
+      parallel_(flow_.grid().cells() >= kParallelCells) {
+    if (!flow_.grid().inside.empty()) inside_ = flow_.grid().inside;
+    if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
+    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("tumbler: bulk CFL outside (0, 1]");
+    if (!preserves_bounds(setup.segregation.scheme))
+        throw InputError("tumbler: the segregation scheme must keep 0 <= phi <= Phi (modified-godunov, -2)");
+    const Grid& g = flow_.grid();
+    const std::vector<double> Phi0 =
+        setup.packing_feedback ? drum_bed_at_rest(setup.drum, g, setup.material, initial_.phi_hat, initial_.mean, setup.flow.T_floor)
+                               : drum_bed_at_rest(setup.drum, g, setup.material, initial_.mean, setup.flow.T_floor);
+    phi_.assign(g.cells(), 0.0);
+    for (std::size_t c = 0; c < g.cells(); ++c) phi_[c] = initial_.phi_hat[c] * Phi0[c];
+    if (setup.packing_feedback) flow_.set_phi_hat(initial_.phi_hat);  // before set_state, which checks Phi < Phi_rcp
+    const std::vector<double> zero(g.cells(), 0.0), T(g.cells(), setup.flow.T_floor);
+    flow_.set_state(Phi0, {zero, zero, zero}, T);
+
+    frozen_.Phi = Phi0;
+    for (int axis = 0; axis < 3; ++axis)
+        if (g.n[axis] > 1) frozen_.a[axis].assign(g.cells(), 0.0), d_s_[axis].assign(g.cells(), 0.0);
+}
+
+std::vector<double> CoupledTumbler::phi_hat() const {
+    const std::size_t cells = grid().cells();
+    const unsigned char* in = inside_.data();
+    const double *Phi = flow_.Phi().data(), *phi = phi_.data();
+    std::vector<double> hat(cells);
+#pragma omp parallel for schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0;
+    return hat;
+}
+
+double CoupledTumbler::step(double t_end) {
+    using clock = std::chrono::steady_clock;
+    auto t0 = clock::now();
+    const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)
+    auto t1 = clock::now();
+    timers_.flow += seconds(t0, t1);
+    const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
+    bulk_courant_ += bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, phi_, setup_.Phi_min);  // 2. (eq. 65, F^bulk)
+    clip_bulk_round_off();
+    t0 = clock::now();
+    timers_.bulk += seconds(t1, t0);
+    since_segregation_ += dt;  // (assumption C1)
+    if (since_segregation_ >= segregation_step_ || bulk_courant_ >= setup_.bulk_cfl || flow_.time() >= t_end)
+        segregate();  // 3. (eqs. 46, 47, 52b)
+    t1 = clock::now();
+    timers_.segregation += seconds(t0, t1);
+    if (setup_.packing_feedback) flow_.set_phi_hat(phi_hat());  // 4. (eqs. 18, 19)
+    timers_.feedback += seconds(t1, clock::now());
+    return dt;
+}
+
+void CoupledTumbler::clip_bulk_round_off() {
+    const std::size_t cells = grid().cells();
+    const unsigned char* in = inside_.data();
+    const double *Phi = flow_.Phi().data(), *before = flow_.Phi_before().data();
+    double* phi = phi_.data();
+    // The donor-cell step keeps phi_hat in [0, 1] exactly; its rounding is a few ulps of the amounts
+    // that pass through a cell: relative to the cell's larger Phi (before or after the step).
+    double excess = -INFINITY, lowest = INFINITY, worst = 0.0;  // worst: largest correction / allowance
+    long nonfinite = 0;
+#pragma omp parallel for reduction(max : excess, worst) reduction(min : lowest) reduction(+ : nonfinite) schedule(static) if (parallel_)
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!in[c]) continue;
+        nonfinite += !std::isfinite(phi[c]);
+        excess = std::max(excess, phi[c] - Phi[c]), lowest = std::min(lowest, phi[c]);
+        const double correction = std::max(phi[c] - Phi[c], -phi[c]);
+        if (correction > 0.0) worst = std::max(worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
+    }
+    max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);
+    if (nonfinite > 0)
+        throw InvariantError("tumbler: non-finite phi after the bulk step at t = " + format_number(time()) + " (" +
+                             std::to_string(nonfinite) + " cells)");
+    if (!(excess > 0.0 || lowest < 0.0)) return;
+    if (worst > 1.0)
+        throw InvariantError("tumbler: the bulk step left 0 <= phi <= Phi by more than round-off (max phi - Phi " +
+                             format_number(excess, 3) + ", min phi " + format_number(lowest, 3) + ") at t = " +
+                             format_number(time()) + " s");
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!in[c]) continue;
+        largest_bulk_clip_ = std::max(largest_bulk_clip_, std::max(phi[c] - Phi[c], -phi[c]));
+        phi[c] = std::clamp(phi[c], 0.0, Phi[c]);
+    }
+}
+
+void CoupledTumbler::update_segregation_velocity() {
+    const FlowSolver& f = flow_;
+    const Grid& g = grid();
+    const bool planar = g.n[1] == 1;
+    DirectionOptions options;
+    options.planar_xz = planar;
+    const Vec3 gv = f.frame().gravity_at(f.time());  // gravity in the drum frame
+    const Eigen::Vector3d gravity(gv[0], gv[1], gv[2]);
+    const std::vector<double>* grad[3][3];
+    for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) grad[b][a] = &f.velocity_gradient(b, a);
+    frozen_.Phi = f.Phi();
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        Eigen::Vector3d d_s = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+        if (g.is_inside(c) && f.Phi()[c] >= setup_.Phi_min) {  // (assumption C2)
+            Eigen::Matrix3d G;
+            for (int b = 0; b < 3; ++b)
+                for (int k = 0; k < 3; ++k) G(b, k) = (*grad[b][k])[c];
+            const Eigen::Vector3d u(f.u(0)[c], f.u(1)[c], f.u(2)[c]);  // relative to the drum
+            d_s = segregation_direction(G, u, options).d_s;               // (Sect. 2.3)
+            a = segregation_velocity(setup_.S, f.T()[c], d_s, gravity);   // (eq. 46)
+        }
+        for (int axis = 0; axis < 3; ++axis)
+            if (!frozen_.a[axis].empty()) frozen_.a[axis][c] = a(axis), d_s_[axis][c] = d_s(axis);
+    }
+}
+
+void CoupledTumbler::synchronise() {
+    if (since_segregation_ > 0.0) segregate();
+}
+
+void CoupledTumbler::segregate() {
+    update_segregation_velocity();
+    segregation_steps_ += segregation_.advance(frozen_, since_segregation_, phi_);  // (eq. 52b)
+    ++substeps_;
+    segregation_step_ = segregation_.time_step(frozen_);  // (assumption C1)
+    since_segregation_ = 0.0, bulk_courant_ = 0.0;
+}
+
+}  // namespace granseg

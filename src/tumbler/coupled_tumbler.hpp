@@ -1,0 +1,147 @@
+// The whole model in the drum of Sect. 4.2: the compressible flow (eqs. 8, 9, 14) and the
+// segregation equation (eq. 47) coupled both ways. Walk-through: docs/sect4.2_tumbler.md.
+//
+//   solves      eqs. (8), (9), (14) and (47) in the turning drum, coupled both ways, split as in eq. (65)
+//   inputs      CoupledTumblerSetup: the drum, the material, flow settings, S, the segregation options,
+//               Phi_min, bulk_cfl, packing feedback, phi_hat at t = 0
+//   outputs     after each step the flow's Phi, u, T and phi (phi_hat())
+//   invariants  the amount of each phase; 0 <= phi <= Phi after the bulk step and the segregation
+//               sub-step (round-off clips only); a uniform phi_hat stays uniform (coupled_run.hpp checks them)
+//
+// Everything is solved in the frame turning with the drum (the flow solver's frame, F5). One
+// step of the coupled model:
+//   1. flow step (FlowSolver::step): Phi, u, T from t to t + dt with the closures of the current
+//      phi_hat; it hands over the face mass fluxes M with Phi_new = Phi_old - dt div_h M;
+//   2. bulk transport: phi carried by the same M, donor cell in phi_hat = phi/Phi_old, written
+//      like the mass balance (BulkTransport), so phi_new/Phi_new is a convex combination of old
+//      phi_hat values (the flow keeps dt sum_out M/h <= 0.9 Phi_old) and a uniform phi_hat stays
+//      uniform to round-off (eq. 65, F^bulk; assumption G1);
+//   3. segregation sub-step with Phi and T frozen (eq. 52b), when due (below): per cell
+//      a = S^sl = -S0 sqrt(T) (d_s . g) d_s (eq. 46) with T from the flow and d_s (Sect. 2.3) from
+//      the flow's velocity gradient and its velocity, both relative to the drum, so the rotation
+//      of the frame does not enter d_s (research/model.md 3.4); a = 0 where Phi < Phi_min
+//      (assumption C2). SegregationSolver::advance (split over the axes, the sign-robust flux of
+//      eq. 63, zero flux on every wall face) covers the time since the last sub-step in steps of
+//      its own CFL bound;
+//   4. closures from phi_hat: with packing feedback, Phi_rcp(phi_hat) and Phi_co(phi_hat) follow
+//      phi_hat cell by cell (FlowSolver::set_phi_hat; eqs. 18, 19); without, they keep the values
+//      of the initial mixture (assumption C3).
+// When the segregation sub-step is due (assumption C1): the flow's step is bounded by sound waves
+// (c ~ 6 m/s in the bed: dt ~ 8e-5 s at 1 mm cells), the segregation's by |a| ~ 0.1 m/s and the
+// bulk flow's by |u| ~ 0.3 m/s (a cell in ~3e-3 s). The sub-step is taken once the time since the
+// last one reaches the segregation's CFL step at the last sub-step, or once the bulk flow has
+// moved bulk_cfl of a segregating cell's content (the sum over the flow steps of
+// dt sum_out M/(h Phi_old), over cells with Phi >= Phi_min), whichever comes first, and at every
+// t_end a caller steps to: multi-rate Lie splitting, steps 1, 2 and 4 every flow step, step 3 at
+// its own pace, as in the kinematic drum whose step is min(bulk, segregation CFL step). When the
+// flow step is the longer one (a semi-implicit flow, a large S), the sub-step comes every flow
+// step and advance() sub-cycles it.
+#pragma once
+
+#include "closures/material.hpp"
+#include "flow/flow_solver.hpp"
+#include "segregation/bulk_transport.hpp"
+#include "segregation/frozen_fields.hpp"
+#include "segregation/segregation_solver.hpp"
+#include "tumbler/drum.hpp"
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace granseg {
+
+/// Everything a coupled drum run needs (defaults: the Sect. 4.2 set-up, docs/scenes.md).
+struct CoupledTumblerSetup {
+    DrumSpec drum;
+    Material material = Material::glass_substitute();
+    FlowSettings flow;               // its phi_hat is replaced by the initial mixture's
+    double S = 1.0;                  // S0 of eq. (46), s/m (Sect. 4.2); 0: no segregation
+    SegregationOptions segregation;  // scheme, limiter, cfl of the segregation sub-step
+    double bulk_cfl = 0.9;           // the bulk flow's share of the sub-step interval (C1)
+    double Phi_min = 0.05;           // no segregation in cells with Phi below this (C2)
+    bool packing_feedback = true;    // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
+    std::function<double(double x, double z)> phi_hat0 = [](double, double) { return 0.5; };  // lab frame at t = 0
+};
+
+/// Wall-clock seconds spent in the parts of the coupled step (for benchmarks).
+struct CoupledTimers {
+    double flow = 0, bulk = 0, segregation = 0, feedback = 0;  // steps 1, 2, 3, 4
+};
+
+class CoupledTumbler {
+public:
+    /// The drum at rest with the bed of the initial mixture (assumptions F6, C3) and
+    /// phi = phi_hat0 Phi. Throws InputError for phi_hat0 outside [0, 1] in a bed cell,
+    /// InvariantError if the bed is packed beyond Phi_rcp(phi_hat0) somewhere (packing feedback).
+    explicit CoupledTumbler(const CoupledTumblerSetup& setup);
+
+    /// One coupled step (see above), not beyond t_end; the segregation is brought up to date
+    /// when the step ends at t_end. Returns the flow's dt. InvariantError on a broken invariant
+    /// of the flow, or if the bulk step leaves 0 <= phi <= Phi beyond round-off.
+    double step(double t_end = std::numeric_limits<double>::infinity());
+    /// Takes the segregation sub-step for the time since the last one, if any (before output).
+    void synchronise();
+
+    const CoupledTumblerSetup& setup() const { return setup_; }
+    const FlowSolver& flow() const { return flow_; }
+    const Grid& grid() const { return flow_.grid(); }
+    double time() const { return flow_.time(); }
+    /// phi per cell (small-particle volume fraction); 0 outside the drum.
+    const std::vector<double>& phi() const { return phi_; }
+    /// phi_hat = phi/Phi per cell (0 where Phi = 0).
+    std::vector<double> phi_hat() const;
+    /// The small-particle share that sets Phi_rcp, Phi_co without packing feedback (C3).
+    double initial_mixture() const { return initial_.mean; }
+    /// The fields of the last segregation sub-step: Phi, a = S^sl per axis, and d_s per axis
+    /// (drum frame, sign-normalised; 0 where there is no segregation).
+    const FrozenFields& frozen() const { return frozen_; }
+    const std::vector<double>& d_s(int axis) const { return d_s_[axis]; }
+    long segregation_substeps() const { return substeps_; }
+    long segregation_steps() const { return segregation_steps_; }
+    /// Largest amount the segregation solver's round-off guard moved phi back into [0, Phi].
+    double largest_correction() const { return segregation_.largest_correction(); }
+    /// Over all bulk steps so far: the extremes of phi - Phi and of phi before the round-off clip,
+    /// and the largest clip.
+    double max_excess() const { return max_excess_; }
+    double min_phi() const { return min_phi_; }
+    double largest_bulk_clip() const { return largest_bulk_clip_; }
+    const CoupledTimers& timers() const { return timers_; }
+
+private:
+    /// a = S^sl and d_s per cell from the flow's current fields (step 3).
+    void update_segregation_velocity();
+    /// Step 3 over the time since the last sub-step.
+    void segregate();
+    /// After the bulk step: phi back into [0, Phi] where rounding left it; InvariantError if by more
+    /// than kBoundRoundOff times the cell's larger Phi (before or after the step).
+    void clip_bulk_round_off();
+
+    /// phi_hat0 at the cells below the flat initial surface (0 elsewhere) and their mean (C3).
+    struct InitialMixture {
+        std::vector<double> phi_hat;
+        double mean;
+    };
+    static InitialMixture initial_mixture(const CoupledTumblerSetup& setup);
+
+    CoupledTumblerSetup setup_;
+    InitialMixture initial_;  // before flow_, which is built with its mean
+    FlowSolver flow_;
+    BulkTransport bulk_;
+    FaceFields no_inflow_;  // closed drum: nothing enters through a domain boundary
+    SegregationSolver segregation_;
+    std::vector<unsigned char> inside_;  // 1 for inside cells
+    bool parallel_;                      // OpenMP threads on the per-cell loops of larger grids
+    FrozenFields frozen_;
+    std::array<std::vector<double>, 3> d_s_;
+    std::vector<double> phi_;
+    double since_segregation_ = 0.0;  // time since the last segregation sub-step
+    double segregation_step_ = 0.0;   // the segregation's CFL step at the last sub-step
+    double bulk_courant_ = 0.0;       // largest share of a segregating cell's material moved since then
+    long substeps_ = 0, segregation_steps_ = 0;
+    double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
+    double largest_bulk_clip_ = 0.0;
+    CoupledTimers timers_;
+};
+
+}  // namespace granseg

@@ -1,0 +1,66 @@
+#include "tumbler/drum.hpp"
+
+#include "closures/closures.hpp"
+#include "flow/bed.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace granseg {
+
+Frame DrumSpec::frame() const {
+    Frame f;
+    f.gravity = gravity;
+    f.omega = 2.0 * M_PI * rps;
+    return f;
+}
+
+Grid DrumSpec::grid() const { return drum_grid(cells_per_diameter, radius(), axial_cells, axial_length); }
+
+std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat,
+                                     double T) {
+    return lithostatic_bed(grid, material, drum.surface_height(), drum.gravity, T, material.packing.Phi_rcp(phi_hat),
+                           material.packing.Phi_co(phi_hat));
+}
+
+std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material,
+                                     const std::vector<double>& phi_hat, double mixture, double T) {
+    std::vector<double> Phi = drum_bed_at_rest(drum, grid, material, mixture, T);
+    const std::vector<double> fill = drum_fill_fraction(drum, grid);
+    const PackingFit& packing = material.packing;
+    for (std::size_t c = 0; c < grid.cells(); ++c) {
+        if (!(Phi[c] > 0.0) || phi_hat[c] == mixture) continue;
+        const double p = evaluate_closures_at(material, Phi[c] / fill[c], T, packing.Phi_rcp(mixture), packing.Phi_co(mixture)).p;
+        Phi[c] = fill[c] * volume_fraction_at_pressure(material, p, T, packing.Phi_rcp(phi_hat[c]), packing.Phi_co(phi_hat[c]));
+    }
+    return Phi;
+}
+
+std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid) {
+    std::vector<double> fill(grid.cells(), 0.0);
+    const double z_surface = drum.surface_height(), h = grid.h[2];
+    for (int k = 0; k < grid.n[2]; ++k)
+        for (int j = 0; j < grid.n[1]; ++j)
+            for (int i = 0; i < grid.n[0]; ++i) {
+                const std::size_t c = grid.index(i, j, k);
+                const double bottom = grid.center(2, k) - 0.5 * h;
+                if (grid.is_inside(c)) fill[c] = std::clamp((z_surface - bottom) / h, 0.0, 1.0);
+            }
+    return fill;
+}
+
+void AngleOfRepose::add(double t, double angle_deg) {
+    if (t < from_ || !std::isfinite(angle_deg)) return;  // NaN: no surface crossing within 0.8 R
+    sum_ += angle_deg, sum2_ += angle_deg * angle_deg, ++n_;
+}
+
+double AngleOfRepose::mean() const { return n_ > 0 ? sum_ / n_ : std::numeric_limits<double>::quiet_NaN(); }
+
+double AngleOfRepose::std_dev() const {
+    if (n_ < 2) return 0.0;
+    const double m = mean();
+    return std::sqrt(std::max(0.0, sum2_ / n_ - m * m));
+}
+
+}  // namespace granseg
