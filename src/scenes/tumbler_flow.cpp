@@ -9,6 +9,7 @@
 #include "flow/flow_output.hpp"
 #include "scenes/material_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -93,7 +94,8 @@ DrumRun read_drum_run(const SceneFile& scene) {
     DrumRun r;
     r.t_end = scene.number("run", "t_end", Range::above(0), r.t_end);
     r.snapshot_every = scene.number("run", "snapshot_every", Range::above(0), r.snapshot_every);
-    r.angle_from = scene.number("run", "angle_from", Range::at_least(0), r.angle_from);
+    // Default: 10 s (the first avalanches are over), or 0.4 t_end in shorter runs.
+    r.angle_from = scene.number("run", "angle_from", Range::at_least(0), std::min(r.angle_from, 0.4 * r.t_end));
     r.vtk = scene.flag("run", "vtk", r.vtk);
     if (!(r.angle_from < r.t_end))
         scene.fail("run", "angle_from", format_number(r.angle_from) + " >= t_end", "angle_from < t_end");
