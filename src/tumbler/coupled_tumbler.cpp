@@ -44,8 +44,8 @@ CoupledTumbler::InitialMixture CoupledTumbler::initial_mixture(const CoupledTumb
                 if (!(fill[c] > 0.0)) continue;
                 const double x = grid.center(0, i), z = grid.center(2, k), v = setup.phi_hat0(x, z);
                 if (!(v >= 0.0 && v <= 1.0))
-                    throw InputError("tumbler: initial phi_hat = " + format_number(v) + " at x = " +
-                                                format_number(x) + ", z = " + format_number(z) + " outside [0, 1]");
+                    throw InputError("tumbler: initial phi_hat = " + format_number(v) + " at x = " + format_number(x) +
+                                     ", z = " + format_number(z) + " outside [0, 1]");
                 m.phi_hat[c] = v;
                 m.mean += fill[c] * v, filled += fill[c];  // (assumption C3)
             }
