@@ -74,11 +74,6 @@ Sample window(TimeStepping mode, int n, int steps) {
     return r;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,16 +102,16 @@ int main(int argc, char** argv) {
                     for (int k = 0; k < 5; ++k) share[k].push_back(last.share[k]);
                     newton.push_back(last.newton), krylov.push_back(last.krylov);
                 }
-                const double step = median(dt), cost = median(ns) * 1e-9 * last.cells;  // s per step
+                const double step = verify::median(dt), cost = verify::median(ns) * 1e-9 * last.cells;  // s per step
                 const double wall = cost / step, semi = mode == TimeStepping::semi_implicit;
                 if (!semi) explicit_wall = wall;
                 const double ratio = semi ? explicit_wall / wall : 1.0;
                 table.row({semi, static_cast<double>(n), static_cast<double>(threads), static_cast<double>(last.cells),
-                           median(ns), step, 1.0 / step, wall, kRunLength * wall, median(newton), median(krylov),
-                           median(share[0]), median(share[1]), median(share[2]), median(share[3]), median(share[4]), ratio});
+                           verify::median(ns), step, 1.0 / step, wall, kRunLength * wall, verify::median(newton), verify::median(krylov),
+                           verify::median(share[0]), verify::median(share[1]), verify::median(share[2]), verify::median(share[3]), verify::median(share[4]), ratio});
                 std::printf("%-14s %-6d %-7d %-8zu %-9.0f %-9.3g %-10.4g %-10.3g %-9.3g %-7.2f %-7.1f %-6.2f\n",
-                            choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, median(ns), step, 1.0 / step,
-                            wall, kRunLength * wall, median(newton), median(krylov), ratio);
+                            choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, verify::median(ns), step, 1.0 / step,
+                            wall, kRunLength * wall, verify::median(newton), verify::median(krylov), ratio);
                 std::fflush(stdout);
             }
         }

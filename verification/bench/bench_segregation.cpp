@@ -38,13 +38,6 @@ const std::vector<int> kCells = {50, 100, 200, 400, 800, 1600, 3200, 6400, 12800
 const std::vector<SegregationScheme> kSchemes = {SegregationScheme::modified_godunov, SegregationScheme::modified_godunov_2,
                                                  SegregationScheme::classic_upwind, SegregationScheme::classic_godunov};
 
-std::string load_average() {
-    std::ifstream in("/proc/loadavg");
-    std::string one, five, fifteen;
-    in >> one >> five >> fifteen;
-    return one + " " + five + " " + fifteen;
-}
-
 struct Problem {
     std::string name;
     ColumnSetup setup;

@@ -56,13 +56,6 @@ constexpr double kIndexAtLeast = 0.2;
 // off, it stays within that spread.
 constexpr double kContrastSpreads = 2.0;
 
-std::string load_average() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-}
-
 double run_timed(const std::string& scene, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();
     run_scene_file(scene, dir);
@@ -84,11 +77,6 @@ std::map<std::string, double> last_row(const std::string& path) {
     return row;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,24 +87,24 @@ int main(int argc, char** argv) {
     std::vector<double> flow, coupled;
     DataTable times({"run", "flow_seconds", "coupled_seconds"});
     for (int run = 0; run < kRuns; ++run) {
-        const std::string before = load_average();
+        const std::string before = verify::load_average();
         flow.push_back(run_timed(kFlowScene, dir + "/tumbler_flow"));
         coupled.push_back(run_timed(kCoupledScene, dir + "/tumbler"));
         times.row({static_cast<double>(run), flow.back(), coupled.back()});
         std::printf("run %d: tumbler-flow %.1f s, tumbler %.1f s wall on %d threads (load average before: %s, after: %s)\n",
-                    run, flow.back(), coupled.back(), threads, before.c_str(), load_average().c_str());
+                    run, flow.back(), coupled.back(), threads, before.c_str(), verify::load_average().c_str());
         std::fflush(stdout);
     }
-    times.comment("100 cells per diameter, 25 s, " + std::to_string(threads) + " threads; medians: tumbler-flow " + verify::format(median(flow)) +
-                  " s, tumbler " + verify::format(median(coupled)) + " s");
+    times.comment("100 cells per diameter, 25 s, " + std::to_string(threads) + " threads; medians: tumbler-flow " + verify::format(verify::median(flow)) +
+                  " s, tumbler " + verify::format(verify::median(coupled)) + " s");
     verify::write_data(options, "bench_tumbler_times.dat", times);
     run_scene_file(kNoFeedbackScene, dir + "/tumbler_no_feedback");
     run_scene_file(kKinematicScene, dir + "/tumbler_kinematic");
 
     CheckTable t("Sect. 4.2 at 100 cells per diameter, 25 s: cost of the coupling, pattern, Fig. 7d");
-    const double ratio = median(coupled) / median(flow);
-    t.note("median wall time of " + std::to_string(kRuns) + " runs: tumbler-flow " + verify::format(median(flow)) +
-           " s, tumbler " + verify::format(median(coupled)) + " s");
+    const double ratio = verify::median(coupled) / verify::median(flow);
+    t.note("median wall time of " + std::to_string(kRuns) + " runs: tumbler-flow " + verify::format(verify::median(flow)) +
+           " s, tumbler " + verify::format(verify::median(coupled)) + " s");
     t.at_most("wall time tumbler / tumbler-flow (medians)", ratio, kRatio);
     const auto on = last_row(dir + "/tumbler/summary.dat"), off = last_row(dir + "/tumbler_no_feedback/summary.dat");
     const double cell_steps = on.at("steps") * on.at("inside_cells");

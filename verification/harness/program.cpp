@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -50,6 +51,18 @@ ProgramOptions parse_program_options(int argc, char** argv) {
 
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table) {
     write_file_atomically(options.data_dir + "/" + name, table.str());
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    in >> one >> five >> fifteen;
+    return one + " " + five + " " + fifteen;
 }
 
 std::vector<std::vector<double>> read_rows(const std::string& path) {

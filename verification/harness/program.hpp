@@ -24,4 +24,10 @@ std::vector<std::vector<double>> read_rows(const std::string& path);
 /// Writes `table` to DIR/name (atomically, see core/output.hpp).
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table);
 
+/// The median of `values` (the upper one of the middle two for an even count; benchmarks).
+double median(std::vector<double> values);
+
+/// The machine's load averages over 1, 5 and 15 minutes (/proc/loadavg), for a benchmark's header.
+std::string load_average();
+
 }  // namespace granseg::verify
