@@ -6,7 +6,6 @@
 #include "harness/flow_reference.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 
@@ -40,15 +39,16 @@ InclineRun run_incline(const Material& m, const FlowSettings& settings, double t
     };
     InclineRun r;
     auto advance = [&](double t) {
-        const auto start = std::chrono::steady_clock::now();
-        for (; solver.time() < t; ++r.steps) solver.step(t);
-        r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        add_timed(r.time, [&] {
+            for (; solver.time() < t; ++r.steps) solver.step(t);
+        });
     };
     for (int w = 0; w < 2; ++w) {
         advance(std::min(kInclineWindow[w], t_end));
         r.kinetic[w] = kinetic();
     }
     advance(t_end);
+    r.work = solver.counters();
     for (int k = 0; k < nz; ++k) {
         r.z.push_back(g.center(2, k)), r.Phi.push_back(solver.Phi()[k]);
         r.u.push_back(solver.u(0)[k]), r.T.push_back(solver.T()[k]);
@@ -57,14 +57,14 @@ InclineRun run_incline(const Material& m, const FlowSettings& settings, double t
     return r;
 }
 
-double critical_angle(const Material& m, const FlowSettings& settings, int nz, double* seconds) {
+double critical_angle(const Material& m, const FlowSettings& settings, int nz, Timing* time) {
     double lo = 20.0, hi = 24.0;
-    if (seconds) *seconds = 0.0;
+    if (time) *time = Timing{};
     for (int it = 0; it < 11; ++it) {
         const double mid = 0.5 * (lo + hi);
         const InclineRun r = run_incline(m, settings, mid, nz, kInclineWindow[1]);
         (r.kinetic[1] > r.kinetic[0] ? hi : lo) = mid;
-        if (seconds) *seconds += r.seconds;
+        if (time) time->wall += r.time.wall, time->cpu += r.time.cpu;
     }
     return 0.5 * (lo + hi);
 }

@@ -9,6 +9,8 @@
 #include "closures/material.hpp"
 #include "core/output.hpp"
 #include "flow/flow_settings.hpp"
+#include "flow/flow_solver.hpp"
+#include "harness/program.hpp"
 
 #include <vector>
 
@@ -23,16 +25,17 @@ struct InclineRun {
     double kinetic[2] = {0.0, 0.0};  // at kInclineWindow[0], kInclineWindow[1] (or t_end if earlier)
     std::vector<double> z, Phi, u, T;  // at t_end, per cell
     double T_max = 0.0;
-    double seconds = 0.0;  // wall time of the solver's time loop (steady_clock)
+    Timing time;  // of the solver's time loop
     long steps = 0;
+    FlowCounters work;  // the semi-implicit step's pressure solves, Newton steps, CG iterations
 };
 
 /// The layer at slope theta_deg (degrees) on nz cells, run to t_end (s) with `settings`.
 InclineRun run_incline(const Material& m, const FlowSettings& settings, double theta_deg, int nz, double t_end);
 
 /// The solver's critical angle (degrees): bisection on [20, 24] on the sign of the kinetic-energy
-/// trend over kInclineWindow, to 0.002 degrees; `seconds` (if given) receives the time loops' sum.
-double critical_angle(const Material& m, const FlowSettings& settings, int nz, double* seconds = nullptr);
+/// trend over kInclineWindow, to 0.002 degrees; `time` (if given) receives the time loops' sum.
+double critical_angle(const Material& m, const FlowSettings& settings, int nz, Timing* time = nullptr);
 
 /// A bed cell: one holding at least half of Phi_co (the surface cell and dust are left out).
 bool in_bed(const Material& m, double Phi);

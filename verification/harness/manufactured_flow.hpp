@@ -17,8 +17,10 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "flow/flow_settings.hpp"
 #include "core/grid.hpp"
+#include "flow/flow_settings.hpp"
+#include "flow/flow_solver.hpp"
+#include "harness/program.hpp"
 
 #include <array>
 #include <vector>
@@ -30,8 +32,9 @@ inline constexpr double kManufacturedSide = 0.05, kManufacturedEnd = 0.05;
 
 struct ManufacturedRun {
     double error_Phi = 0.0, error_u = 0.0, error_T = 0.0;  // volume-averaged |numerical - exact| at t_end
-    double seconds = 0.0;  // wall time of the solver's time loop alone (steady_clock; sources set up before)
+    Timing time;  // of the solver's time loop alone (the sources are set up before)
     long steps = 0;
+    FlowCounters work;  // the semi-implicit step's pressure solves, Newton steps, CG iterations
 };
 
 /// The problem on n x n cells: its source terms at the time nodes, computed once (they cost

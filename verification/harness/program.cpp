@@ -2,7 +2,10 @@
 
 #include "core/error.hpp"
 
+#include <time.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
@@ -56,6 +59,20 @@ void write_data(const ProgramOptions& options, const std::string& name, const Da
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     return values[values.size() / 2];
+}
+
+double cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+void add_timed(Timing& t, const std::function<void()>& work) {
+    const double cpu = cpu_seconds();
+    const auto wall = std::chrono::steady_clock::now();
+    work();
+    t.wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+    t.cpu += cpu_seconds() - cpu;
 }
 
 std::string load_average() {

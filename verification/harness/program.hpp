@@ -4,6 +4,7 @@
 
 #include "core/output.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,16 @@ void write_data(const ProgramOptions& options, const std::string& name, const Da
 
 /// The median of `values` (the upper one of the middle two for an even count; benchmarks).
 double median(std::vector<double> values);
+
+/// CPU time of this process in seconds (POSIX clock_gettime; nanosecond resolution).
+double cpu_seconds();
+
+/// Wall-clock (steady_clock) and CPU seconds of some work.
+struct Timing {
+    double wall = 0.0, cpu = 0.0;
+};
+/// Runs `work` and adds its wall-clock and CPU seconds to `t`.
+void add_timed(Timing& t, const std::function<void()>& work);
 
 /// The machine's load averages over 1, 5 and 15 minutes (/proc/loadavg), for a benchmark's header.
 std::string load_average();

@@ -1,19 +1,13 @@
 #include "harness/segregation_run.hpp"
 
+#include "harness/program.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <time.h>
 
 namespace granseg::verify {
 
 namespace {
-
-/// CPU time of this process in seconds (POSIX clock_gettime; nanosecond resolution).
-double cpu_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
 
 long double sum(const std::vector<double>& u) {
     long double s = 0.0L;
