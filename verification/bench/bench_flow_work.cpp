@@ -5,7 +5,7 @@
 // timed; on a shared machine the CPU time is the robust one). Two problems:
 //   manufactured  the manufactured solution of verify_flow_order (harness/manufactured_flow.hpp),
 //                 n x n cells, n = 16 .. 128: mean |error| of Phi, u, T at t_end. The explicit
-//                 step is bound by the sound speed (c dt/h ~ 0.45); the semi-implicit step by
+//                 step is bound by the sound speed (c dt/h ~ 0.5); the semi-implicit step by
 //                 dt_max = k h, k = 0.25, 1, 4 s/m (c dt/h ~ 2.3, 9, 36 at c = 9.1 m/s) or by
 //                 its own bounds (Sect. 5 of docs/flow_solver.md), since its error against its
 //                 cost depends on dt; its cfl on |u| does not bind (|u| <= 0.075 m/s);
@@ -19,7 +19,7 @@
 // nothing. The load average is written before and after. Writes bench_flow_work.dat (one gnuplot
 // index per curve, see its header) for figures/bench_flow_work.gp, and prints the table.
 //
-// Run: build/bench/bench_flow_work [--data DIR]   (about 3 minutes on one core)
+// Run: build/bench/bench_flow_work [--data DIR]   (about 5 minutes of CPU time on one core)
 #include "harness/flow_reference.hpp"
 #include "harness/incline_flow.hpp"
 #include "harness/manufactured_flow.hpp"
