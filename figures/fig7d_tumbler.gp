@@ -8,7 +8,8 @@
 if (!exists("dir")) dir = datadir.'/tumbler'
 f = dir.'/fields_lab.dat'
 load 'figures/tumbler_common.gp'
-summary(col) = system(sprintf("awk '!/^#/ {print $%d}' %s/summary.dat", col, dir))  # nan without pure or mixed cells
+# three digits; nan (no pure or mixed cells) as printed
+summary(col) = system(sprintf("awk '!/^#/ {v = $%d; if (v ~ /nan/) print v; else printf \"%%.3g\", v}' %s/summary.dat", col, dir))
 v_rest = 0.05 * 2 * pi * 0.1 * R / 100
 set terminal pngcairo size 1500,720 font "Sans,11" noenhanced
 set output outfile
