@@ -1,4 +1,4 @@
-// Command line shared by the verification programs and benchmarks:
+// Command line, data output and timing helpers shared by the verification programs and benchmarks:
 //   PROGRAM [--data DIR]     DIR receives the .dat files for the figures (default build/data).
 #pragma once
 
