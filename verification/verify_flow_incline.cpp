@@ -116,9 +116,9 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto [options, m] = verify::flow_program(argc, argv);
-    const double theta_mu = std::atan(std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0)) * 180.0 / M_PI;
-    CheckTable table("Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)");
-    for (const TimeStepping mode : verify::kFlowModes) check_mode(table, options, m, mode);
-    return table.finish();
+    const verify::FlowProgram program = verify::flow_program(argc, argv);
+    const double theta_mu = std::atan(program.material.shear_friction()) * 180.0 / M_PI;
+    return verify::run_flow_modes(
+        program, "Sect. 2.1 flow (c): inclined plane (friction angle atan(mu) = " + verify::format(theta_mu) + " deg)",
+        check_mode);
 }

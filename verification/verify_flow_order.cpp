@@ -79,8 +79,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto [options, m] = verify::flow_program(argc, argv);
-    CheckTable table("Sect. 2.1 flow (e): order of accuracy, manufactured solution of the full system");
-    for (const TimeStepping mode : verify::kFlowModes) check_mode(table, options, m, mode);
-    return table.finish();
+    const verify::FlowProgram program = verify::flow_program(argc, argv);
+    return verify::run_flow_modes(
+        program, "Sect. 2.1 flow (e): order of accuracy, manufactured solution of the full system", check_mode);
 }

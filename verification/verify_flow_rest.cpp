@@ -214,8 +214,6 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const auto [options, m] = verify::flow_program(argc, argv);
-    CheckTable table("Sect. 2.1 flow (a): bed at rest under gravity");
-    for (const TimeStepping mode : verify::kFlowModes) check_mode(table, options, m, mode);
-    return table.finish();
+    const verify::FlowProgram program = verify::flow_program(argc, argv);
+    return verify::run_flow_modes(program, "Sect. 2.1 flow (a): bed at rest under gravity", check_mode);
 }

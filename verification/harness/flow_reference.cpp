@@ -92,6 +92,12 @@ FlowProgram flow_program(int argc, char** argv) {
     return {options, Material::glass_substitute()};
 }
 
+int run_flow_modes(const FlowProgram& program, const std::string& title, FlowModeCheck check) {
+    CheckTable table(title);
+    for (const TimeStepping mode : kFlowModes) check(table, program.options, program.material, mode);
+    return table.finish();
+}
+
 std::string mode_tag(TimeStepping mode) { return "[" + choice_name(kTimeSteppings, mode) + "] "; }
 
 std::string mode_suffix(TimeStepping mode) {

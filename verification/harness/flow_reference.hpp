@@ -6,6 +6,7 @@
 
 #include "closures/material.hpp"
 #include "flow/flow_solver.hpp"
+#include "harness/check_table.hpp"
 #include "harness/program.hpp"
 
 #include <functional>
@@ -41,6 +42,12 @@ FlowProgram flow_program(int argc, char** argv);
 /// The flow solver's time-stepping modes, in the order every flow verification program runs them
 /// with the same checks and tolerances (docs/flow_solver.md Sect. 8).
 inline constexpr TimeStepping kFlowModes[] = {TimeStepping::explicit_waves, TimeStepping::semi_implicit};
+
+/// The checks of one mode: what a flow verification program runs once per mode of kFlowModes.
+using FlowModeCheck = void (*)(CheckTable& table, const ProgramOptions& options, const Material& m, TimeStepping mode);
+
+/// Runs `check` for every mode of kFlowModes into one table titled `title`; returns its exit code.
+int run_flow_modes(const FlowProgram& program, const std::string& title, FlowModeCheck check);
 
 /// "[explicit] " or "[semi-implicit] ": the prefix of a check's name in a mode.
 std::string mode_tag(TimeStepping mode);
