@@ -1,0 +1,90 @@
+// A multilevel preconditioner for the conjugate gradients of the pressure solve
+// (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 5): symmetric positive definite matrices
+// A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with
+// faces of weight 0, the inside cells of a drum an irregular part of the grid).
+//
+// The choice (docs/flow_solver.md Sect. 5, "The multilevel preconditioner"):
+// * Aggregation: the cells of each 2 x 2 (x 2) block of the grid form one coarse cell (on the
+//   coarse grid again, level by level), whatever the mask; the prolongation P is piecewise
+//   constant, so the coarse matrix is the Galerkin product A_c = P^T A P, formed from the actual
+//   fine matrix (at the wall, where blocks are cut, and across faces of weight 0 it is what the
+//   fine matrix says). A_c(I, J) is the sum of the fine entries a_ij with i in I and j in J, so
+//   the coarse sparsity patterns and the map of each fine entry to its coarse entry are built
+//   once (`build`); a new matrix with the same pattern costs one pass of additions per level
+//   (`factorize`). A 5-point (7-point) stencil stays one on every level.
+// * Cycle: a symmetric V-cycle, one multicolour Gauss-Seidel sweep before the coarse
+//   correction (colours in order) and its adjoint after it (colours in reverse order): the
+//   preconditioner is a fixed symmetric positive definite operator, so plain CG stays valid.
+//   The rows of one colour are independent, so a sweep runs on OpenMP threads (`parallel`, as
+//   FlowMesh::parallel decides). On the coarsest level (at most kCoarsestRows rows) a dense
+//   LDL^T factorisation solves exactly.
+// * Over-correction: piecewise-constant prolongation gives coarse corrections that are too
+//   small (the energy of a constant over a block is less than that of the smooth error it
+//   replaces), so the V-cycle's iterations would grow with the levels (Notay, ETNA 37, 2010;
+//   Braess, Appl. Numer. Math. 19, 1995). The coarse correction is scaled by kOverCorrection,
+//   fixed (a varying factor, or Notay's K-cycle, would make the preconditioner nonlinear and
+//   need flexible CG). Any positive factor keeps the V-cycle positive definite: the coarse
+//   correction I - a P B_c P^T A is at most I in the A inner product when B_c is positive.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <vector>
+
+namespace granseg {
+
+class Multilevel {
+public:
+    using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+    using Vector = Eigen::VectorXd;
+
+    /// Builds the hierarchy for matrices with the pattern of `pattern` (values ignored; every row
+    /// has its diagonal), row r being the grid cell with integer coordinates cell[r] (>= 0).
+    /// `parallel`: smoothing sweeps on OpenMP threads.
+    void build(const Matrix& pattern, const std::vector<std::array<int, 3>>& cell, bool parallel);
+
+    /// Takes the values of a matrix with the pattern of `build` (its compressed value array) on
+    /// every level: Galerkin sums and the coarsest factorisation.
+    Multilevel& take_values(const double* value);
+
+    /// z = M^-1 b: one V-cycle from z = 0 for A z = b.
+    Vector solve(const Vector& b) const;
+
+    /// Number of levels (1: the fine matrix alone, solved directly).
+    int levels() const { return static_cast<int>(level_.size()); }
+    /// Rows on level l.
+    long rows(int l) const { return level_[l].A.rows(); }
+
+    // The interface of an Eigen iterative solver's preconditioner (Eigen::ConjugateGradient):
+    // the hierarchy comes from `build`, so the pattern analysis has nothing to do.
+    template <class SparseMatrix>
+    Multilevel& analyzePattern(const SparseMatrix&) { return *this; }
+    template <class SparseMatrix>
+    Multilevel& factorize(const SparseMatrix& A) { return take_values(A.valuePtr()); }
+    template <class SparseMatrix>
+    Multilevel& compute(const SparseMatrix& A) { return take_values(A.valuePtr()); }
+    Eigen::ComputationInfo info() const { return Eigen::Success; }
+
+private:
+    struct Level {
+        Matrix A;
+        std::vector<long> diagonal;             // value index of each row's diagonal
+        std::vector<std::vector<long>> colour;  // rows of each colour (no two neighbours share one)
+        std::vector<long> aggregate;            // row -> row of the next level (not on the coarsest)
+        std::vector<long> galerkin;             // value index -> value index of the next level
+        mutable Vector x, r, b;                 // the V-cycle's iterate, residual and right-hand side
+    };
+
+    /// One Gauss-Seidel sweep for A x = b on level L, colours in order or (backward) in reverse order.
+    void sweep(const Level& L, bool backward) const;
+    /// x = V-cycle for A x = b on level l, from x = 0.
+    void cycle(std::size_t l) const;
+
+    std::vector<Level> level_;
+    Eigen::LDLT<Eigen::MatrixXd> coarsest_;
+    bool parallel_ = false;
+};
+
+}  // namespace granseg
