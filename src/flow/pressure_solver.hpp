@@ -9,10 +9,10 @@
 // the first approach the solution from below (Casulli & Zanolli, SIAM J. Sci. Comput. 32, 2010):
 // Phi stays below Phi_rcp. Each Newton step solves J s = -F, J = diag(dPhi/dp) + K, symmetric
 // positive definite, by conjugate gradients (Eigen) only as far as the Newton tolerance needs,
-// preconditioned by one multilevel V-cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
-// cells, Galerkin coarse matrices), whose iterations do not grow with the grid as Jacobi's do
-// (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior faces) and the
-// hierarchy are built once; the first guess is the previous step's dp (warm start).
+// preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
+// cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
+// grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
+// faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start).
 #pragma once
 
 #include "closures/material.hpp"
