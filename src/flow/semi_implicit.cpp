@@ -143,7 +143,7 @@ void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, double dt, const Flo
             P_hi = dp[hi] + (1.0 - s_lo) * force;
         }
         const double M = pf.donor[f] * U;
-        const FaceFlux G = transport_flux(L, R, M, U, 0.0);
+        const FaceFlux G = transport_flux(L, R, M, 0.0);
         out.mass[f] = G.mass, out.energy[f] = G.energy;
         out.mom[t1][f] = G.mom_t1, out.mom[t2][f] = G.mom_t2;
         out.mom[a][f] = G.mom_n + P_hi;

@@ -33,7 +33,7 @@
 //    (flow/pressure_solver.hpp) for the increments dp.
 // 3. Corrected faces (semi_implicit_face_fluxes): U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9
 //    for the increment), M = Phi_d U (the hand-over; 0 on walls); the fluxes of momentum and
-//    Phi T are M times the donor's values (normal momentum: M U, flow/transport_flux.hpp), and
+//    Phi T are M times the donor's values (all three velocity components, flow/transport_flux.hpp), and
 //    each cell gets its share of the increment force dp_lo - dp_hi.
 #pragma once
 
