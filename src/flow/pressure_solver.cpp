@@ -52,8 +52,13 @@ PressureSolver::PressureSolver(const FlowMesh& mesh) {
             }
     }
     laplacian_ = J_;
+    std::vector<std::array<int, 3>> cell;  // grid coordinates of each row, for the aggregation
+    for (std::size_t c : mesh.inside_cells)
+        cell.push_back({static_cast<int>(c % grid.n[0]), static_cast<int>(c / grid.n[0] % grid.n[1]),
+                        static_cast<int>(c / grid.n[0] / grid.n[1])});
+    cg_.preconditioner().build(J_, cell, mesh.parallel);
     cg_.setTolerance(kKrylovTolerance);
-    cg_.analyzePattern(J_);  // the fill-reducing ordering of the preconditioner, once
+    cg_.analyzePattern(J_);
     x_.setZero(rows);
 }
 
@@ -65,6 +70,7 @@ PressureSolver::PressureSolver(const PressureSolver& other)
       J_(other.J_),
       laplacian_(other.laplacian_),
       x_(other.x_) {
+    cg_.preconditioner() = other.cg_.preconditioner();
     cg_.setTolerance(kKrylovTolerance);
     cg_.analyzePattern(J_);
 }
@@ -73,6 +79,7 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
     if (this == &other) return *this;
     unknown_ = other.unknown_, entry_ = other.entry_, mirror_ = other.mirror_, diagonal_ = other.diagonal_;
     J_ = other.J_, laplacian_ = other.laplacian_, x_ = other.x_;
+    cg_.preconditioner() = other.cg_.preconditioner();
     cg_.analyzePattern(J_);
     return *this;
 }

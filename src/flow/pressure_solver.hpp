@@ -8,15 +8,17 @@
 // increasing and the coupling matrix is a weighted graph Laplacian, so the Newton iterates after
 // the first approach the solution from below (Casulli & Zanolli, SIAM J. Sci. Comput. 32, 2010):
 // Phi stays below Phi_rcp. Each Newton step solves J s = -F, J = diag(dPhi/dp) + K, symmetric
-// positive definite, by conjugate gradients (Eigen, Jacobi preconditioner: it costs less per
-// solve than Eigen's incomplete Cholesky, whose factorisation dominates, measured) only as far as
-// the Newton tolerance needs; the sparsity pattern (inside cells, interior faces) is built once;
-// the first guess is the previous step's dp (warm start).
+// positive definite, by conjugate gradients (Eigen) only as far as the Newton tolerance needs,
+// preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
+// cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
+// grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
+// faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start).
 #pragma once
 
 #include "closures/material.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_state.hpp"
+#include "flow/multilevel.hpp"
 #include "flow/semi_implicit.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
@@ -38,7 +40,7 @@ struct PressureSolveStats {
 class PressureSolver {
 public:
     explicit PressureSolver(const FlowMesh& mesh);
-    /// Copies the pattern and the warm start; the Krylov solver (not copyable) is set up anew.
+    /// Copies the pattern, the hierarchy and the warm start; the Krylov solver (not copyable) is set up anew.
     PressureSolver(const PressureSolver& other);
     PressureSolver& operator=(const PressureSolver& other);
 
@@ -57,7 +59,7 @@ private:
     std::vector<long> diagonal_;                // value index of each row's diagonal
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, rhs_, slope_, F_;
-    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg_;
+    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 
 }  // namespace granseg
