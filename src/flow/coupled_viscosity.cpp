@@ -7,50 +7,18 @@
 
 namespace granseg {
 
-CoupledViscosity::CoupledViscosity(const FlowMesh& mesh) {
-    const Grid& grid = mesh.grid;
-    unknown_.assign(grid.cells(), -1);
-    long rows = 0;
-    for (std::size_t c : mesh.inside_cells) unknown_[c] = rows++;
-    std::vector<Eigen::Triplet<double>> pattern;
-    for (long r = 0; r < rows; ++r) pattern.emplace_back(r, r, 0.0);
-    for (int a = 0; a < 3; ++a)
-        for (const MeshFace& f : mesh.faces[a])
-            if (mesh.active[a] && f.kind == kInterior && !f.repeat) {
-                pattern.emplace_back(unknown_[f.lo], unknown_[f.hi], 0.0);
-                pattern.emplace_back(unknown_[f.hi], unknown_[f.lo], 0.0);
-            }
-    A_.resize(rows, rows);
-    A_.setFromTriplets(pattern.begin(), pattern.end());
-    A_.makeCompressed();
-    auto position = [&](long row, long col) {
-        for (long k = A_.outerIndexPtr()[col]; k < A_.outerIndexPtr()[col + 1]; ++k)
-            if (A_.innerIndexPtr()[k] == row) return k;
-        return -1L;
-    };
-    diagonal_.resize(rows);
-    for (long r = 0; r < rows; ++r) diagonal_[r] = position(r, r);
-    for (int a = 0; a < 3; ++a) {
-        entry_[a].assign(grid.faces(a), -1);
-        mirror_[a].assign(grid.faces(a), -1);
-        for (const MeshFace& f : mesh.faces[a])
-            if (mesh.active[a] && f.kind == kInterior && !f.repeat) {
-                entry_[a][f.f] = position(unknown_[f.lo], unknown_[f.hi]);
-                mirror_[a][f.f] = position(unknown_[f.hi], unknown_[f.lo]);
-            }
-    }
+CoupledViscosity::CoupledViscosity(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)), A_(pattern_.matrix) {
     set_up();
 }
 
 CoupledViscosity::CoupledViscosity(const CoupledViscosity& other)
-    : unknown_(other.unknown_), entry_(other.entry_), mirror_(other.mirror_), diagonal_(other.diagonal_), A_(other.A_) {
+    : pattern_(other.pattern_), A_(other.A_) {
     set_up();
 }
 
 CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
     if (this == &other) return *this;
-    unknown_ = other.unknown_, entry_ = other.entry_, mirror_ = other.mirror_, diagonal_ = other.diagonal_;
-    A_ = other.A_;
+    pattern_ = other.pattern_, A_ = other.A_;
     set_up();
     return *this;
 }
@@ -69,8 +37,8 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     std::fill(value, value + A_.nonZeros(), 0.0);
     // Mass rows; an empty cell is an identity row with right-hand side 0 (at rest).
     for (std::size_t c : mesh.inside_cells) {
-        const long r = unknown_[c];
-        value[diagonal_[r]] = active(c) ? Phi[c] : 1.0;
+        const long r = pattern_.unknown[c];
+        value[pattern_.diagonal[r]] = active(c) ? Phi[c] : 1.0;
         for (int b = 0; b < 3; ++b) rhs_(r, b) = active(c) ? Phi[c] * state.u[b][c] : 0.0;
     }
     // Viscous couplings; an active cell next to an empty one keeps its weight on the diagonal
@@ -83,20 +51,20 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
                 if (f.repeat) continue;
                 const double w = r * harmonic_mean(eta[f.lo], eta[f.hi]);
                 const bool lo = active(f.lo), hi = active(f.hi);
-                if (lo) value[diagonal_[unknown_[f.lo]]] += w;
-                if (hi) value[diagonal_[unknown_[f.hi]]] += w;
-                if (lo && hi) value[entry_[a][f.f]] -= w, value[mirror_[a][f.f]] -= w;
+                if (lo) value[pattern_.diagonal[pattern_.unknown[f.lo]]] += w;
+                if (hi) value[pattern_.diagonal[pattern_.unknown[f.hi]]] += w;
+                if (lo && hi) value[pattern_.entry[a][f.f]] -= w, value[pattern_.mirror[a][f.f]] -= w;
                 continue;
             }
             const std::size_t c = f.lo;  // a wall: both sides name the inside cell
             if (!active(c)) continue;
             const double w = 2.0 * r * eta[c];
-            value[diagonal_[unknown_[c]]] += w;
+            value[pattern_.diagonal[pattern_.unknown[c]]] += w;
             // Moving walls are those of the domain boundary (embedded walls are at rest).
             const int side = f.kind == kWallBelow ? 0 : 1;
             const int index = static_cast<int>((c / grid.stride(a)) % grid.n[a]);
             if (index == (side == 0 ? 0 : grid.n[a] - 1))
-                for (int b = 0; b < 3; ++b) rhs_(unknown_[c], b) += w * walls[a][side][b];
+                for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }
     ldlt_.factorize(A_);
@@ -105,7 +73,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     const Eigen::MatrixXd u = ldlt_.solve(rhs_);
     for (std::size_t c : mesh.inside_cells)
         for (int b = 0; b < 3; ++b) {
-            state.u[b][c] = u(unknown_[c], b);
+            state.u[b][c] = u(pattern_.unknown[c], b);
             state.m[b][c] = Phi[c] * state.u[b][c];
         }
 }

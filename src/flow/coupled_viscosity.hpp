@@ -14,6 +14,7 @@
 // Cholesky factor (Eigen SimplicialLDLT) each step.
 #pragma once
 
+#include "flow/cell_pattern.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
 #include "flow/flow_state.hpp"
@@ -21,7 +22,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include <array>
 #include <vector>
 
 namespace granseg {
@@ -40,10 +40,7 @@ public:
 private:
     using Matrix = Eigen::SparseMatrix<double>;
     void set_up();
-    std::vector<long> unknown_;                // grid cell -> row (-1 outside)
-    std::array<std::vector<long>, 3> entry_;   // per axis and interior face: value index of (lo, hi) and (hi, lo)
-    std::array<std::vector<long>, 3> mirror_;
-    std::vector<long> diagonal_;               // value index of each row's diagonal
+    CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
     Matrix A_;
     Eigen::MatrixXd rhs_;
     Eigen::SimplicialLDLT<Matrix> ldlt_;

@@ -19,38 +19,9 @@ constexpr double kRoundOff = 1e-15;
 constexpr int kMaxNewton = 30;
 }  // namespace
 
-PressureSolver::PressureSolver(const FlowMesh& mesh) {
+PressureSolver::PressureSolver(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)) {
     const Grid& grid = mesh.grid;
-    unknown_.assign(grid.cells(), -1);
-    long rows = 0;
-    for (std::size_t c : mesh.inside_cells) unknown_[c] = rows++;
-    std::vector<Eigen::Triplet<double>> pattern;
-    for (long r = 0; r < rows; ++r) pattern.emplace_back(r, r, 0.0);
-    for (int a = 0; a < 3; ++a)
-        for (const MeshFace& f : mesh.faces[a])
-            if (f.kind == kInterior && !f.repeat) {
-                pattern.emplace_back(unknown_[f.lo], unknown_[f.hi], 0.0);
-                pattern.emplace_back(unknown_[f.hi], unknown_[f.lo], 0.0);
-            }
-    J_.resize(rows, rows);
-    J_.setFromTriplets(pattern.begin(), pattern.end());
-    J_.makeCompressed();
-    auto position = [&](long row, long col) {
-        for (long k = J_.outerIndexPtr()[row]; k < J_.outerIndexPtr()[row + 1]; ++k)
-            if (J_.innerIndexPtr()[k] == col) return k;
-        return -1L;
-    };
-    diagonal_.resize(rows);
-    for (long r = 0; r < rows; ++r) diagonal_[r] = position(r, r);
-    for (int a = 0; a < 3; ++a) {
-        entry_[a].assign(grid.faces(a), -1);
-        mirror_[a].assign(grid.faces(a), -1);
-        for (const MeshFace& f : mesh.faces[a])
-            if (f.kind == kInterior && !f.repeat) {
-                entry_[a][f.f] = position(unknown_[f.lo], unknown_[f.hi]);
-                mirror_[a][f.f] = position(unknown_[f.hi], unknown_[f.lo]);
-            }
-    }
+    J_ = pattern_.matrix;
     laplacian_ = J_;
     std::vector<std::array<int, 3>> cell;  // grid coordinates of each row, for the aggregation
     for (std::size_t c : mesh.inside_cells)
@@ -59,14 +30,11 @@ PressureSolver::PressureSolver(const FlowMesh& mesh) {
     cg_.preconditioner().build(J_, cell, mesh.parallel);
     cg_.setTolerance(kKrylovTolerance);
     cg_.analyzePattern(J_);
-    x_.setZero(rows);
+    x_.setZero(J_.rows());
 }
 
 PressureSolver::PressureSolver(const PressureSolver& other)
-    : unknown_(other.unknown_),
-      entry_(other.entry_),
-      mirror_(other.mirror_),
-      diagonal_(other.diagonal_),
+    : pattern_(other.pattern_),
       J_(other.J_),
       laplacian_(other.laplacian_),
       x_(other.x_) {
@@ -77,7 +45,7 @@ PressureSolver::PressureSolver(const PressureSolver& other)
 
 PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
     if (this == &other) return *this;
-    unknown_ = other.unknown_, entry_ = other.entry_, mirror_ = other.mirror_, diagonal_ = other.diagonal_;
+    pattern_ = other.pattern_;
     J_ = other.J_, laplacian_ = other.laplacian_, x_ = other.x_;
     cg_.preconditioner() = other.cg_.preconditioner();
     cg_.analyzePattern(J_);
@@ -95,14 +63,14 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         for (const MeshFace& f : mesh.faces[a])
             if (f.kind == kInterior && !f.repeat && faces[a].coupling[f.f] != 0.0) {
                 const double k = faces[a].coupling[f.f];
-                value[entry_[a][f.f]] -= k, value[mirror_[a][f.f]] -= k;
-                value[diagonal_[unknown_[f.lo]]] += k, value[diagonal_[unknown_[f.hi]]] += k;
+                value[pattern_.entry[a][f.f]] -= k, value[pattern_.mirror[a][f.f]] -= k;
+                value[pattern_.diagonal[pattern_.unknown[f.lo]]] += k, value[pattern_.diagonal[pattern_.unknown[f.hi]]] += k;
             }
     std::copy(value, value + laplacian_.nonZeros(), J_.valuePtr());
     Eigen::VectorXd base(rows), target(rows);
     x_.resize(rows), slope_.resize(rows), F_.resize(rows);
     for (std::size_t c : mesh.inside_cells) {
-        const long r = unknown_[c];
+        const long r = pattern_.unknown[c];
         base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]).Phi;
         target[r] = change[c];
         x_[r] = dp[c];
@@ -115,7 +83,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         // F = Phi(p + dp) - Phi(p) - r + K dp, and the slopes dPhi/dp at p + dp.
         F_ = laplacian_ * x_ - target;
         for (std::size_t c : mesh.inside_cells) {
-            const long r = unknown_[c];
+            const long r = pattern_.unknown[c];
             const VolumeAtPressure v = volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]);
             F_[r] += v.Phi - base[r];
             slope_[r] = v.slope;
@@ -128,7 +96,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             break;
         }
         if (stats.newton == kMaxNewton) break;
-        for (long r = 0; r < rows; ++r) J_.valuePtr()[diagonal_[r]] = value[diagonal_[r]] + slope_[r];
+        for (long r = 0; r < rows; ++r) J_.valuePtr()[pattern_.diagonal[r]] = value[pattern_.diagonal[r]] + slope_[r];
         cg_.factorize(J_);
         // Each solve only needs to bring the residual well below the Newton tolerance: with the
         // warm start that is often a small relative reduction.
@@ -137,7 +105,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
         x_ += step;
     }
-    for (std::size_t c : mesh.inside_cells) dp[c] = x_[unknown_[c]];
+    for (std::size_t c : mesh.inside_cells) dp[c] = x_[pattern_.unknown[c]];
     return stats;
 }
 

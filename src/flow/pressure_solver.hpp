@@ -16,6 +16,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "flow/cell_pattern.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/multilevel.hpp"
@@ -53,10 +54,7 @@ public:
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-    std::vector<long> unknown_;                 // grid cell -> row (-1 outside)
-    std::array<std::vector<long>, 3> entry_;    // per axis and face: value index of (lo, hi), or -1
-    std::array<std::vector<long>, 3> mirror_;   // and of (hi, lo)
-    std::vector<long> diagonal_;                // value index of each row's diagonal
+    CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, rhs_, slope_, F_;
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
