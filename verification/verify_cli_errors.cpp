@@ -163,6 +163,7 @@ std::vector<Case> cli_cases(const fs::path& out) {
         bad_scene("tumbler, unknown key", "[coupling] feedback:", coupled + "[coupling]\nfeedback = true\n"),
         bad_scene("tumbler, [flow] phi_hat (the mixture comes from [initial])", "[flow] phi_hat:",
                   coupled + "[flow]\nphi_hat = 0.5\n"),
+        bad_scene("tumbler, unknown viscosity solve", "[flow] viscosity:", coupled + "[flow]\nviscosity = \"diagonal\"\n"),
         bad_scene("tumbler, cells too coarse for the flowing layer", "[drum] cells_per_diameter:",
                   coupled + "[drum]\ncells_per_diameter = 16\n"),
         bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),

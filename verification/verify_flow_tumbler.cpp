@@ -12,7 +12,7 @@
 //   - the dynamic angle of repose (mean surface angle over 10..25 s) is not below the model's
 //     friction angle atan(mu) = atan(sqrt(2 eta0 eps0/3)) less the coarse grid's error of the
 //     critical angle (verify_flow_incline: 0.7 degrees at 16 cells per layer depth; 1 degree here).
-// Runs in the explicit mode only: in the semi-implicit mode the drum does not roll (a known defect
+// Runs in the explicit mode only: in the semi-implicit mode the drum slumps (a known defect
 // of that experimental mode, docs/flow_solver.md Sect. 5), which the table reports as a note.
 // Writes DIR/flow_tumbler/{fields_lab,fields_drum,history,summary}.dat for figures/fig_flow_tumbler.gp.
 //
@@ -95,6 +95,6 @@ int main(int argc, char** argv) {
                " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " + verify::format(friction) + " deg");
     table.at_least("dynamic angle of repose - friction angle (deg)", summary[0][2] - friction, -kAngleMargin);
     table.note(verify::mode_tag(TimeStepping::semi_implicit) + verify::kKnownDefect +
-               "not run: the drum does not roll in this mode (it turns with the drum past 90 deg before it avalanches)");
+               "not run: the drum slumps in this mode instead of rolling (stick-slip)");
     return table.finish();
 }

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 
 namespace granseg {
 
@@ -19,9 +20,19 @@ inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
      "pressure implicit (one Newton-Krylov solve per step), dt bounded by the material speed (cfl on |u_n|)"},
 };
 
+/// How the implicit viscosity treats the axes (docs/flow_solver.md Sect. 4).
+enum class ViscositySolve { split, coupled };
+inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
+    {ViscositySolve::coupled, "coupled",
+     "all axes in one sparse Cholesky solve per step (default with semi-implicit)"},
+    {ViscositySolve::split, "split",
+     "one axis after the other, tridiagonal line solves; creep too slow when dt eta/(Phi h^2) >> 1 (default with explicit)"},
+};
+
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
     TimeStepping time_stepping = TimeStepping::explicit_waves;
+    std::optional<ViscositySolve> viscosity;  // unset: coupled with semi-implicit, split with explicit
     double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
     double Phi_vacuum = 1e-12;  // cells with Phi <= this are empty: u = 0, T = T_floor
@@ -29,6 +40,13 @@ struct FlowSettings {
     double dt_max = 1e-3;       // s
     double phi_hat = 0.5;       // small-particle share used for Phi_rcp, Phi_co when no phi field is set
 };
+
+/// The viscosity solve `s` asks for, or the default of its time stepping (the semi-implicit
+/// step's dt makes the splitting error of the line solves too large; docs/assumptions.md F10).
+inline ViscositySolve viscosity_solve(const FlowSettings& s) {
+    return s.viscosity ? *s.viscosity
+                       : s.time_stepping == TimeStepping::semi_implicit ? ViscositySolve::coupled : ViscositySolve::split;
+}
 
 /// Sources added to the conserved variables (manufactured solutions): called per inside cell with
 /// time and cell centre, fills rates for (Phi, Phi u_x, Phi u_y, Phi u_z, Phi T).

@@ -123,7 +123,7 @@ double FlowSolver::explicit_step(double t_end) {
     explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, Phi_before_, state_);
     timers_.convection += seconds_since(t0);
     t0 = clock::now();
-    implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, work_, state_);
+    viscosity(dt);
     timers_.viscosity += seconds_since(t0);
     return dt;
 }
@@ -153,7 +153,7 @@ double FlowSolver::semi_implicit_step(double t_end) {
         });
         timers_.convection += seconds_since(t0);
         t0 = clock::now();
-        implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, work_, state_);
+        viscosity(dt);
         timers_.viscosity += seconds_since(t0);
         t0 = clock::now();
         // 2., 3. Face predictor, pressure increments, corrected faces; the donors of faces the
@@ -200,6 +200,15 @@ double FlowSolver::semi_implicit_step(double t_end) {
     explicit_update(mesh_, settings_, none, FlowSource{}, t_, dt, faces_, state_.Phi, state_);
     timers_.convection += seconds_since(t0);
     return dt;
+}
+
+void FlowSolver::viscosity(double dt) {
+    if (viscosity_solve(settings_) == ViscositySolve::split) {
+        implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, work_, state_);
+        return;
+    }
+    if (!coupled_) coupled_.emplace(mesh_);
+    coupled_->apply(mesh_, settings_, walls_, dt, closures_.eta, state_);
 }
 
 double FlowSolver::step(double t_end) {

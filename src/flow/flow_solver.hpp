@@ -29,6 +29,7 @@
 
 #include "closures/material.hpp"
 #include "core/grid.hpp"
+#include "flow/coupled_viscosity.hpp"
 #include "flow/diffusion_lines.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
@@ -39,6 +40,7 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace granseg {
@@ -111,6 +113,8 @@ private:
     /// the pressure at t^n, implicit viscosity, pressure solve, transport; repeated with half the
     /// dt while the step would break a bound. Returns dt.
     double semi_implicit_step(double t_end);
+    /// The implicit viscosity of a step dt, split or coupled as the settings say.
+    void viscosity(double dt);
     void check_invariants() const;
 
     FlowMesh mesh_;
@@ -136,6 +140,7 @@ private:
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
+    std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
     std::vector<double> work_, heat_;  // one value per cell, work space of the kernels
     FlowTimers timers_;
     FlowCounters counters_;

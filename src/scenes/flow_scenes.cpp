@@ -17,6 +17,9 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.time_stepping = parse_choice(kTimeSteppings, scene.choice(s, "time_stepping", choice_names(kTimeSteppings),
                                                                 choice_name(kTimeSteppings, f.time_stepping)),
                                    "time_stepping");
+    f.viscosity = parse_choice(kViscositySolves, scene.choice(s, "viscosity", choice_names(kViscositySolves),
+                                                              choice_name(kViscositySolves, viscosity_solve(f))),
+                               "viscosity");
     f.cfl = scene.number(s, "cfl", Range::left_open(0, 1), f.cfl);
     f.T_floor = scene.number(s, "T_floor", Range::open(0, 1e-2), f.T_floor);
     f.Phi_vacuum = scene.number(s, "Phi_vacuum", Range::open(0, 1e-3), f.Phi_vacuum);

@@ -12,7 +12,7 @@
 
 namespace granseg {
 
-/// Reads the optional [flow] section: time_stepping, cfl, T_floor, Phi_vacuum, dt_min, dt_max and, if `mixture`,
+/// Reads the optional [flow] section: time_stepping, viscosity, cfl, T_floor, Phi_vacuum, dt_min, dt_max and, if `mixture`,
 /// phi_hat (a scene whose mixture comes from elsewhere leaves it out, so the key is rejected).
 FlowSettings read_flow_settings(const SceneFile& scene, bool mixture = true);
 

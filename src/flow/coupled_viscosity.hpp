@@ -1,0 +1,52 @@
+// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 4): every velocity
+// component u_b solves
+//     Phi u_new - dt sum_axis d/dx_a (eta d u_new/dx_a) = Phi u      (eqs. 9-11, stress eta grad u)
+// with the same discretisation as the line solves of flow/viscosity.hpp (face coefficient the
+// harmonic mean of the cells' eta, no-slip walls at h/2 with the wall's velocity on moving walls
+// of the domain boundary, empty cells at rest), but without splitting the axes. The split
+// step (Lie/ADI) multiplies the responses of the axes: a mode with viscous rates a = dt eta k_x^2/Phi
+// and b = dt eta k_z^2/Phi is damped by (1 + a)(1 + b) instead of 1 + a + b, so for a, b >> 1 the
+// slow creep of a bed under a load that varies in x and z comes out min(a, b) times too slow,
+// and more so the longer the step (measured: the semi-implicit drum at dt = 1 ms turned past
+// 90 deg before it avalanched; coupled, it avalanches near the friction angle).
+// One sparse symmetric positive definite matrix for the three components: its pattern (inside
+// cells, interior faces) and fill-reducing ordering are set up once, the values and the sparse
+// Cholesky factor (Eigen SimplicialLDLT) each step.
+#pragma once
+
+#include "flow/flow_mesh.hpp"
+#include "flow/flow_settings.hpp"
+#include "flow/flow_state.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <vector>
+
+namespace granseg {
+
+class CoupledViscosity {
+public:
+    explicit CoupledViscosity(const FlowMesh& mesh);
+    /// Copies the pattern; the factorisation (not copyable) is set up anew.
+    CoupledViscosity(const CoupledViscosity& other);
+    CoupledViscosity& operator=(const CoupledViscosity& other);
+
+    /// Updates u and Phi u of `state` (reads Phi, u) for a step dt with eta per cell.
+    void apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
+               const std::vector<double>& eta, FlowState& state);
+
+private:
+    using Matrix = Eigen::SparseMatrix<double>;
+    void set_up();
+    std::vector<long> unknown_;                // grid cell -> row (-1 outside)
+    std::array<std::vector<long>, 3> entry_;   // per axis and interior face: value index of (lo, hi) and (hi, lo)
+    std::array<std::vector<long>, 3> mirror_;
+    std::vector<long> diagonal_;               // value index of each row's diagonal
+    Matrix A_;
+    Eigen::MatrixXd rhs_;
+    Eigen::SimplicialLDLT<Matrix> ldlt_;
+};
+
+}  // namespace granseg
