@@ -45,9 +45,10 @@ constexpr double kNoHeating = 1e-12;
 constexpr double kSlabTol = 1e-10;
 // The coupled viscosity solve (the semi-implicit mode's default) eliminates the 3-D matrix in
 // another order than the 2-D one: its rounding is the sparse Cholesky's forward error, up to
-// kappa eps ~ (dt eta/(Phi h^2)) eps ~ 1e6 * 1e-16 = 1e-10 per step in a bed at T_floor, amplified at
-// most linearly by the 10^4 steps: 1e-6 of the wall speed for the velocities.
-constexpr double kSlabTolCoupled = 1e-6;
+// kappa eps per step with kappa ~ dt eta/(Phi h^2) = 1.5e-4 s * 170 m^2/s / (0.62 * (4.2e-3 m)^2)
+// ~ 2.4e3 (eta at T_floor, eta0 g T0 (Phi - Phi_co)/sqrt(T_floor) with g ~ 20, Phi - Phi_co ~ 0.045),
+// i.e. 5e-13 of the velocities per step, at most 5e-9 summed over the 10^4 steps: 1e-8.
+constexpr double kSlabTolCoupled = 1e-8;
 
 double max_speed(const FlowSolver& s) {
     double v = 0.0;
