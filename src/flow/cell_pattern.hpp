@@ -21,7 +21,7 @@ struct CellPattern {
     std::array<std::vector<long>, 3> entry;  // per axis and interior face: value index of (lo, hi), or -1
     std::array<std::vector<long>, 3> mirror; // and of (hi, lo)
     std::vector<long> diagonal;              // value index of each row's diagonal
-    Matrix matrix;                           // the pattern, values 0, compressed
+    Matrix matrix;                           // the pattern, compressed (values 0 until a user writes them)
 };
 
 /// The pattern of `mesh` in a sparse matrix of type Matrix (row- or column-major).

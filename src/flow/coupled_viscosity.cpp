@@ -7,25 +7,25 @@
 
 namespace granseg {
 
-CoupledViscosity::CoupledViscosity(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)), A_(pattern_.matrix) {
+CoupledViscosity::CoupledViscosity(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)) {
     set_up();
 }
 
 CoupledViscosity::CoupledViscosity(const CoupledViscosity& other)
-    : pattern_(other.pattern_), A_(other.A_) {
+    : pattern_(other.pattern_) {
     set_up();
 }
 
 CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
     if (this == &other) return *this;
-    pattern_ = other.pattern_, A_ = other.A_;
+    pattern_ = other.pattern_;
     set_up();
     return *this;
 }
 
 void CoupledViscosity::set_up() {
-    rhs_.setZero(A_.rows(), 3);
-    ldlt_.analyzePattern(A_);  // the fill-reducing ordering, once per pattern
+    rhs_.setZero(pattern_.matrix.rows(), 3);
+    ldlt_.analyzePattern(pattern_.matrix);  // the fill-reducing ordering, once per pattern
 }
 
 void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
@@ -33,8 +33,8 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     const Grid& grid = mesh.grid;
     const std::vector<double>& Phi = state.Phi;
     auto active = [&](std::size_t c) { return Phi[c] > settings.Phi_vacuum; };
-    double* value = A_.valuePtr();
-    std::fill(value, value + A_.nonZeros(), 0.0);
+    double* value = pattern_.matrix.valuePtr();
+    std::fill(value, value + pattern_.matrix.nonZeros(), 0.0);
     // Mass rows; an empty cell is an identity row with right-hand side 0 (at rest).
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
@@ -67,7 +67,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
                 for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }
-    ldlt_.factorize(A_);
+    ldlt_.factorize(pattern_.matrix);
     if (ldlt_.info() != Eigen::Success)
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
     const Eigen::MatrixXd u = ldlt_.solve(rhs_);

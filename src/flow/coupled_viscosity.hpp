@@ -40,8 +40,7 @@ public:
 private:
     using Matrix = Eigen::SparseMatrix<double>;
     void set_up();
-    CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
-    Matrix A_;
+    CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
     Eigen::SimplicialLDLT<Matrix> ldlt_;
 };
