@@ -1,0 +1,42 @@
+# The drum's dynamic angle of repose against the cell size h, both time-stepping modes (make figures-full).
+# needs: bench_drum_angle
+# Data: bench_drum_angle.dat (cells semi_implicit dt_max h_mm steps wall_s angle_mean_deg angle_std_deg
+#       ke_min_over_mean ke_max_over_mean friction_deg), one row per run of bench_drum_angle.
+set terminal pngcairo size 1200,500 font "Sans,11" noenhanced
+set output outfile
+set multiplot layout 1,2 title "tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps), 25 s, statistics over t >= 10 s"
+set grid
+f = benchdir.'/bench_drum_angle.dat'
+set xlabel "h = D / cells per diameter [mm]"
+set xrange [0:3.5]
+# rows: explicit; semi-implicit at dt_max = 1 ms; semi-implicit at dt_max = 0.1 ms (1/0 drops the others)
+explicit(c) = $2 == 0 ? c : 1/0
+semi(c) = $2 == 1 && $3 > 5e-4 ? c : 1/0
+semi_small(c) = $2 == 1 && $3 < 5e-4 ? c : 1/0
+# the semi-implicit points are shifted by 0.05 mm so that their error bars do not hide the explicit ones
+dx = 0.05
+stats f u 11 nooutput
+friction = STATS_mean
+# the first-order line a + b h through the explicit runs (bench_drum_angle prints the same fit)
+set fit quiet nolog
+a = 20.0; b = 1.0
+fit a + b * x f u (explicit($4)):7 via a, b
+set title "(a) dynamic angle of repose: mean +- standard deviation"
+set ylabel "angle [deg]"
+set key top right
+set yrange [10:35]
+plot friction w l lw 2 dt 2 lc rgb "black" t sprintf("friction angle atan(mu) = %.2f deg", friction), \
+     a + b * x w l lw 1.5 lc rgb "#1f77b4" dt 3 t sprintf("explicit, line a + b h: a = %.2f deg", a), \
+     f u (explicit($4)):7:8 w yerrorlines pt 7 ps 1.3 lc rgb "#1f77b4" t "explicit", \
+     f u (semi($4 + dx)):7:8 w yerrorlines pt 5 ps 1.3 lc rgb "#d62728" t "semi-implicit, dt_max 1 ms", \
+     f u (semi_small($4 + dx)):7:8 w yerrorlines pt 9 ps 1.5 lc rgb "#2ca02c" t "semi-implicit, dt_max 0.1 ms"
+set title "(b) rolling or slumping: kinetic energy (drum frame) min / mean"
+set ylabel "min / mean of the kinetic energy"
+set logscale y
+set format y "%.0e"
+set yrange [*:2]
+set key bottom left
+plot f u (explicit($4)):9 w lp pt 7 ps 1.3 lc rgb "#1f77b4" t "explicit", \
+     f u (semi($4)):9 w lp pt 5 ps 1.3 lc rgb "#d62728" t "semi-implicit, dt_max 1 ms", \
+     f u (semi_small($4)):9 w lp pt 9 ps 1.5 lc rgb "#2ca02c" t "semi-implicit, dt_max 0.1 ms"
+unset multiplot
