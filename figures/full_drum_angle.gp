@@ -35,8 +35,8 @@ set ylabel "min / mean of the kinetic energy"
 set logscale y
 set format y "%.0e"
 set yrange [*:2]
-set key bottom left
+set key center right
 plot f u (explicit($4)):9 w lp pt 7 ps 1.3 lc rgb "#1f77b4" t "explicit", \
-     f u (semi($4)):9 w lp pt 5 ps 1.3 lc rgb "#d62728" t "semi-implicit, dt_max 1 ms", \
-     f u (semi_small($4)):9 w lp pt 9 ps 1.5 lc rgb "#2ca02c" t "semi-implicit, dt_max 0.1 ms"
+     f u (semi($4 + dx)):9 w lp pt 5 ps 1.3 lc rgb "#d62728" t "semi-implicit, dt_max 1 ms", \
+     f u (semi_small($4 + dx)):9 w lp pt 9 ps 1.5 lc rgb "#2ca02c" t "semi-implicit, dt_max 0.1 ms"
 unset multiplot
