@@ -11,8 +11,9 @@
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //
-// Run: build/bench/bench_drum_angle [--data DIR]   (long: about 1.5 hours on one thread, half of
-// it the 100-cell explicit run and the 64-cell semi-implicit run at dt_max = 1e-4 s)
+// Run: build/bench/bench_drum_angle [--data DIR]   (long: 46 minutes on one thread of the shared
+// machine on 2 December 2026, half of it the 64-cell semi-implicit run at dt_max = 1e-4 s and a
+// quarter the 100-cell explicit run)
 #include "closures/packing.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
