@@ -5,9 +5,11 @@
 // t >= angle_from, the kinetic energy (relative to the drum) over t >= angle_from as min/mean and
 // max/mean (a rolling drum keeps both near 1; a slumping one falls by orders of magnitude between
 // avalanches), and the friction angle atan(mu) of the scene's material (Material::shear_friction,
-// eq. 45 balance; docs/flow_solver.md Sect. 1). The one check: mass to round-off in every run.
-// The angles are reported, never asserted: this study measures what the model's angle is at the
-// resolutions we can afford (docs/flow_solver.md Sect. 5, "The drum's angle against h").
+// eq. 45 balance; docs/flow_solver.md Sect. 1); at the end the least-squares line angle = a + b h
+// through the explicit runs (a first-order scheme's error; a is a reading of its h -> 0 limit).
+// The one check: mass to round-off in every run. The angles are reported, never asserted: this
+// study measures what the drum's angle is at the resolutions we can afford (docs/flow_solver.md
+// Sect. 11, "The angle against the cell size").
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //
