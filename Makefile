@@ -250,8 +250,10 @@ bench: deps
 	@$(MAKE) --no-print-directory -j1 run-bench
 	@$(MAKE) --no-print-directory $(PAR) $(BENCH_PNG)
 
+# One job at a time: the full figures may first run two benchmarks (bench_tumbler, bench_drum_angle),
+# whose timings are worthless if they run side by side; rendering the PNGs takes seconds.
 figures-full: deps
-	@$(if $(FULL_PNG),$(MAKE) --no-print-directory $(PAR) $(FULL_PNG),echo "figures-full: no long studies yet (figures/full*.gp)")
+	@$(if $(FULL_PNG),$(MAKE) --no-print-directory -j1 $(FULL_PNG),echo "figures-full: no long studies yet (figures/full*.gp)")
 
 # ---- sanitizers --------------------------------------------------------------------------------
 # A separate build tree; runs the unit tests and every verification program (no figures).
