@@ -7,7 +7,6 @@
 #include "flow/loads.hpp"
 #include "flow/primitives.hpp"
 #include "flow/temperature.hpp"
-#include "flow/time_step.hpp"
 #include "flow/velocity_gradient.hpp"
 #include "flow/viscosity.hpp"
 
@@ -108,7 +107,7 @@ void FlowSolver::update_closures() {
     compute_primitives(mesh_, material_, settings_, phi_hat_, t_, state_, closures_);
 }
 
-double FlowSolver::explicit_step(double t_end) {
+StepSize FlowSolver::explicit_step(double t_end) {
     using clock = std::chrono::steady_clock;
     auto t0 = clock::now();
     for (int a = 0; a < 3; ++a) {
@@ -119,16 +118,16 @@ double FlowSolver::explicit_step(double t_end) {
     }
     effective_pressure(mesh_, faces_, closures_);
     const StepRates rates = explicit_step_rates(mesh_, state_, closures_, faces_);
-    const double dt = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
-    explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, Phi_before_, state_);
+    const StepSize size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
+    explicit_update(mesh_, settings_, frame_, source_, t_, size.dt, faces_, Phi_before_, state_);
     timers_.convection += seconds_since(t0);
     t0 = clock::now();
-    viscosity(dt);
+    viscosity(size.dt);
     timers_.viscosity += seconds_since(t0);
-    return dt;
+    return size;
 }
 
-double FlowSolver::semi_implicit_step(double t_end) {
+StepSize FlowSolver::semi_implicit_step(double t_end) {
     using clock = std::chrono::steady_clock;
     auto t0 = clock::now();
     const StepRates rates = material_step_rates(mesh_, state_, closures_, faces_, steps_ == 0);  // the last step's faces
@@ -139,8 +138,8 @@ double FlowSolver::semi_implicit_step(double t_end) {
         pressure_faces(mesh_, a, frame_.gravity, state_, closures_, potential_, loads_[a], pressure_[a], faces_[a]);
     }
     effective_pressure(mesh_, faces_, closures_);
-    double dt = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
-    if (steps_ > 0) dt = std::min(dt, kStepGrowth * dt_);
+    auto [dt, bound] = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
+    if (steps_ > 0 && kStepGrowth * dt_ < dt) dt = kStepGrowth * dt_, bound = StepBound::growth;
     const std::array<std::vector<double>, 3> m0 = state_.m, u0 = state_.u;
     const std::vector<double> E0 = state_.E;
     for (;;) {
@@ -171,10 +170,15 @@ double FlowSolver::semi_implicit_step(double t_end) {
             timers_.pressure += seconds_since(tp);
             ++counters_.pressure_solves, counters_.newton += stats.newton, counters_.krylov += stats.krylov;
             if (!stats.converged) break;
+            for (int a = 0; a < 3; ++a)
+                if (mesh_.active[a])
+                    corrected_face_velocities(mesh_, a, dt, state_, closures_, pressure_[a], dp_, faces_[a]);
+            cap_dust_outflow(mesh_, dt, state_, closures_, work_, faces_);
+            volume_fraction_after(mesh_, dt, state_.Phi, faces_, work_);
             long reversed = 0;
             for (int a = 0; a < 3; ++a)
                 if (mesh_.active[a]) {
-                    semi_implicit_face_fluxes(mesh_, a, dt, state_, pressure_[a], dp_, faces_[a]);
+                    semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, work_, faces_[a]);
                     reversed += mark_reversed_faces(mesh_, a, state_, faces_[a], pressure_[a]);
                 }
             if (reversed > 0 && donor_passes < kDonorPasses) continue;
@@ -183,7 +187,7 @@ double FlowSolver::semi_implicit_step(double t_end) {
         }
         if (within) break;
         ++counters_.repeated;
-        dt *= 0.5;
+        dt *= 0.5, bound = StepBound::halved;
         state_.Phi = Phi_before_, state_.m = m0, state_.E = E0;
         mesh_.for_each_inside([&](std::size_t c) { dp_[c] = 0.0; });
         if (!(dt >= settings_.dt_min))
@@ -199,7 +203,7 @@ double FlowSolver::semi_implicit_step(double t_end) {
     none.gravity = 0.0;
     explicit_update(mesh_, settings_, none, FlowSource{}, t_, dt, faces_, state_.Phi, state_);
     timers_.convection += seconds_since(t0);
-    return dt;
+    return {dt, bound};
 }
 
 void FlowSolver::viscosity(double dt) {
@@ -217,7 +221,7 @@ double FlowSolver::step(double t_end) {
     auto t0 = clock::now();
     update_closures();
     timers_.closures += seconds_since(t0);
-    const double dt =
+    const auto [dt, bound] =
         settings_.time_stepping == TimeStepping::semi_implicit ? semi_implicit_step(t_end) : explicit_step(t_end);
     gradient_valid_ = false;
     t0 = clock::now();
@@ -225,7 +229,8 @@ double FlowSolver::step(double t_end) {
     timers_.temperature += seconds_since(t0);
 
     t_ += dt;
-    dt_ = dt;
+    dt_ = dt, bound_ = bound;
+    ++counters_.set_by[static_cast<int>(bound)];
     ++steps_;
     check_invariants();
     return dt;

@@ -37,6 +37,7 @@
 #include "flow/frame.hpp"
 #include "flow/pressure_solver.hpp"
 #include "flow/semi_implicit.hpp"
+#include "flow/time_step.hpp"
 
 #include <array>
 #include <limits>
@@ -51,10 +52,12 @@ struct FlowTimers {
     double closures = 0, convection = 0, viscosity = 0, temperature = 0, pressure = 0;
 };
 
-/// The work of the semi-implicit step (for benchmarks): pressure solves, their Newton steps and
-/// conjugate-gradient iterations, and step attempts repeated with half the dt.
+/// The work of the steps (for benchmarks and run summaries): pressure solves, their Newton steps
+/// and conjugate-gradient iterations, step attempts repeated with half the dt (semi-implicit),
+/// and how many steps each bound of flow/time_step.hpp set.
 struct FlowCounters {
     long pressure_solves = 0, newton = 0, krylov = 0, repeated = 0;
+    std::array<long, kStepBounds> set_by{};
 };
 
 class FlowSolver {
@@ -84,6 +87,8 @@ public:
     double time() const { return t_; }
     long steps() const { return steps_; }
     double last_dt() const { return dt_; }
+    /// What set the last step's dt.
+    StepBound last_bound() const { return bound_; }
 
     // Coupling hand-over, valid after a step (see the header comment).
     const std::vector<double>& Phi() const { return state_.Phi; }
@@ -107,12 +112,12 @@ private:
     /// Primitives, closures and the cell potential at t_.
     void update_closures();
     /// The explicit step up to the temperature: HLLC face fluxes, effective pressure, dt, update,
-    /// implicit viscosity. Returns dt.
-    double explicit_step(double t_end);
+    /// implicit viscosity. Returns dt and its bound.
+    StepSize explicit_step(double t_end);
     /// The semi-implicit step up to the temperature (flow/semi_implicit.hpp): dt, predictor with
     /// the pressure at t^n, implicit viscosity, pressure solve, transport; repeated with half the
-    /// dt while the step would break a bound. Returns dt.
-    double semi_implicit_step(double t_end);
+    /// dt while the step would break a bound. Returns dt and its bound.
+    StepSize semi_implicit_step(double t_end);
     /// The implicit viscosity of a step dt, split or coupled as the settings say.
     void viscosity(double dt);
     void check_invariants() const;
@@ -126,6 +131,7 @@ private:
     FlowSource source_;
 
     double t_ = 0.0, dt_ = 0.0;
+    StepBound bound_ = StepBound::dt_max;
     long steps_ = 0;
     FlowState state_;
     std::vector<double> Phi_before_;

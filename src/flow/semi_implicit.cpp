@@ -12,8 +12,6 @@ namespace {
 /// A face whose mass leaves a cell with less than donor/kDonorExcess gets the smaller donor and
 /// the solve is repeated; below that the outflow bound (flow/time_step.hpp) is the guard.
 constexpr double kDonorExcess = 1.1;
-/// Below this share of Phi_co a donor is dust: it carries its material at its own velocity.
-constexpr double kDust = 1e-3;
 
 /// The state of cell c for the faces of `axis` (normal and tangential velocity components).
 FaceState face_state(const FlowState& s, const CellClosures* cl, int a, std::size_t c) {
@@ -24,6 +22,12 @@ FaceState face_state(const FlowState& s, const CellClosures* cl, int a, std::siz
 double mass_mean(double Phi_lo, double Phi_hi, double x_lo, double x_hi) {
     const double mass = Phi_lo + Phi_hi;
     return mass > 0.0 ? (Phi_lo * x_lo + Phi_hi * x_hi) / mass : 0.5 * (x_lo + x_hi);
+}
+
+/// The share Phi_lo/(Phi_lo + Phi_hi) of the lower cell (1/2 when both are empty).
+double mass_share(double Phi_lo, double Phi_hi) {
+    const double mass = Phi_lo + Phi_hi;
+    return mass > 0.0 ? Phi_lo / mass : 0.5;
 }
 
 /// The face pressure that gives each cell the share Phi_cell/(Phi_lo + Phi_hi) of P_lo - P_hi.
@@ -60,8 +64,7 @@ void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& st
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         double P_lo = pf.p_lo[f], P_hi = pf.p_hi[f];
         if (F.kind == kInterior) {  // each side's share of the (limited) face force
-            const double Phi_lo = state.Phi[lo], Phi_hi = state.Phi[hi], mass = Phi_lo + Phi_hi;
-            const double s_lo = mass > 0.0 ? Phi_lo / mass : 0.5;
+            const double s_lo = mass_share(state.Phi[lo], state.Phi[hi]);
             P_lo -= s_lo * pf.force[f];
             P_hi += (1.0 - s_lo) * pf.force[f];
         } else {  // a wall: the inside cell's p' plus the impedance of its motion towards the wall
@@ -85,7 +88,7 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
     mesh.for_each_face(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
-        if (F.kind != kInterior || !(Phi_f > Phi_vac)) {
+        if (F.kind != kInterior || !(std::max(Phi[lo], Phi[hi]) > Phi_vac)) {  // open if either cell holds material
             pf.predictor[f] = pf.coupling[f] = pf.donor[f] = 0.0;
             return;
         }
@@ -102,7 +105,10 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];
         pf.predictor[f] = U;
         pf.donor[f] = donor;
-        pf.coupling[f] = (dt / h) * (dt / h) * donor / Phi_f;
+        // Between two dust cells the face stays explicit (dry face): the pressure increments there
+        // are only an extension of their neighbours' and would push on almost no mass.
+        const bool dust = Phi[lo] < kDust * Phi_co[lo] && Phi[hi] < kDust * Phi_co[hi];
+        pf.coupling[f] = dust ? 0.0 : (dt / h) * (dt / h) * donor / Phi_f;
     });
     const double rate = dt / h;
     const double *U = pf.predictor.data(), *donor = pf.donor.data();
@@ -126,29 +132,80 @@ long mark_reversed_faces(const FlowMesh& mesh, int a, const FlowState& state, co
     return marked;
 }
 
-void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, double dt, const FlowState& state,
-                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& out) {
+void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const FlowState& state,
+                               const CellClosures& closures, const AxisPressureFaces& pf, const std::vector<double>& dp,
+                               AxisFaces& out) {
+    const double h = mesh.grid.h[a], *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        double U = 0.0;
+        if (F.kind == kInterior)
+            U = pf.predictor[f] + (pf.coupling[f] > 0.0 ? dt * (dp[lo] - dp[hi]) / (h * 0.5 * (Phi[lo] + Phi[hi])) : 0.0);
+        const std::size_t from = U > 0.0 ? lo : hi;
+        out.mass[f] = pf.donor[f] * U;
+        out.speed[f] = Phi[from] < kDust * Phi_co[from] ? 0.0 : std::fabs(U);
+    });
+}
+
+void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
+                      std::vector<double>& scale, FlowFaces& faces) {
+    double rate[3];
+    for (int a = 0; a < 3; ++a) rate[a] = mesh.active[a] ? dt / mesh.grid.h[a] : 0.0;
+    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
+    double* s = scale.data();
+    mesh.for_each_inside([&](std::size_t c) { s[c] = 1.0; });
+    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+        if (!(Phi[c] < kDust * Phi_co[c])) return;
+        double out = 0.0;  // the share of Phi that leaves in this step
+        for (int a = 0; a < 3; ++a) {
+            if (rate[a] == 0.0) continue;
+            const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
+            out += rate[a] * (std::max(0.0, faces[a].mass[fu]) + std::max(0.0, -faces[a].mass[fl]));
+        }
+        if (out > kDustOutflow * Phi[c]) s[c] = kDustOutflow * Phi[c] / out;
+    });
+    for (int a = 0; a < 3; ++a)
+        if (mesh.active[a])
+            mesh.for_each_face(a, [&](const MeshFace& F) {
+                double& M = faces[a].mass[F.f];
+                M *= s[M > 0.0 ? F.lo : F.hi];
+            });
+}
+
+void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
+                           std::vector<double>& Phi_after) {
+    mesh.for_each_inside([&](std::size_t c) { Phi_after[c] = Phi[c]; });
+    for (int a = 0; a < 3; ++a) {
+        if (!mesh.active[a]) continue;
+        const double rate = dt / mesh.grid.h[a], *M = faces[a].mass.data();
+        const unsigned char* in = mesh.inside.data();
+        double* out = Phi_after.data();
+        mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+            const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
+            if (in[c]) out[c] -= rate * (M[fu] - M[fl]);
+        });
+    }
+}
+
+void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const AxisPressureFaces& pf,
+                               const std::vector<double>& dp, const std::vector<double>& Phi_after, AxisFaces& out) {
     const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
-    const double h = mesh.grid.h[a];
     mesh.for_each_face(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         const FaceState L = face_state(state, nullptr, a, lo), R = face_state(state, nullptr, a, hi);
-        double U = 0.0, P_lo = dp[lo], P_hi = dp[hi];  // walls: the inside cell's increment, no force
-        if (F.kind == kInterior && pf.donor[f] > 0.0) {
-            const double Phi_f = 0.5 * (L.Phi + R.Phi), force = dp[lo] - dp[hi];
-            U = pf.predictor[f] + dt * force / (h * Phi_f);
-            // Face pressures as seen by each side: its share of the increment force.
-            const double s_lo = L.Phi / (L.Phi + R.Phi);
+        double P_lo = dp[lo], P_hi = dp[hi];  // walls: the inside cell's increment, no force
+        if (F.kind == kInterior && pf.coupling[f] > 0.0) {
+            // Face pressures as seen by each side: its share of the increment force, by the masses
+            // the two cells hold at the end of the step.
+            const double force = dp[lo] - dp[hi], s_lo = mass_share(Phi_after[lo], Phi_after[hi]);
             P_lo = dp[lo] - s_lo * force;
             P_hi = dp[hi] + (1.0 - s_lo) * force;
         }
-        const double M = pf.donor[f] * U;
-        const FaceFlux G = transport_flux(L, R, M, 0.0);
+        const FaceFlux G = transport_flux(L, R, out.mass[f], 0.0);
         out.mass[f] = G.mass, out.energy[f] = G.energy;
         out.mom[t1][f] = G.mom_t1, out.mom[t2][f] = G.mom_t2;
         out.mom[a][f] = G.mom_n + P_hi;
         out.mom_below[f] = G.mom_n + P_lo;
-        out.speed[f] = std::fabs(U);
     });
 }
 

@@ -31,10 +31,16 @@
 //    cell gives much more than its own Phi times |U| dt/h. The explicit flux M_x = Phi_d U* and
 //    the coupling K = (dt/h)^2 Phi_d/Phi_f define the pressure equation
 //    (flow/pressure_solver.hpp) for the increments dp.
-// 3. Corrected faces (semi_implicit_face_fluxes): U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9
-//    for the increment), M = Phi_d U (the hand-over; 0 on walls); the fluxes of momentum and
-//    Phi T are M times the donor's values (all three velocity components, flow/transport_flux.hpp), and
-//    each cell gets its share of the increment force dp_lo - dp_hi.
+// 3. Corrected faces: U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9 for the increment), M = Phi_d U
+//    (the hand-over; 0 on walls); the fluxes of momentum and Phi T are M times the donor's values
+//    (all three velocity components, flow/transport_flux.hpp), and each cell gets its share of the
+//    increment force dp_lo - dp_hi by the masses at the end of the step.
+// Dust (a cell below kDust Phi_co, assumption F11): a face between two dust cells stays explicit
+// (K = 0, U = U*: the increments there are only an extension of the neighbours' and would push on
+// almost no mass); a dust cell's outflow is capped at kDustOutflow of its Phi per step, so dust does
+// not set dt (flow/time_step.hpp); a face is open when either of its cells holds more than
+// Phi_vacuum (a cell just above it between empty ones once had only closed faces and kept
+// accelerating under gravity).
 #pragma once
 
 #include "flow/flow_mesh.hpp"
@@ -83,9 +89,37 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
 long mark_reversed_faces(const FlowMesh& mesh, int axis, const FlowState& state, const AxisFaces& faces,
                          AxisPressureFaces& pf);
 
-/// Part 3 for `axis` after the pressure solve (dp per cell): mass (the hand-over M), energy,
-/// momenta with the corrections of the increments, and the face speed |U| (next step's bound).
-void semi_implicit_face_fluxes(const FlowMesh& mesh, int axis, double dt, const FlowState& state,
-                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& faces);
+/// Below this share of Phi_co a cell is dust: as a donor it carries its material at its own
+/// velocity, and its outflow is capped (dust_outflow_scale) instead of bounding dt (assumption F11).
+constexpr double kDust = 1e-3;
+/// The share of a dust cell's Phi that may leave it in one step.
+constexpr double kDustOutflow = 0.5;
+
+/// Part 3a for `axis` after the pressure solve (dp per cell): the corrected face velocity
+/// U = U* - dt (dp_hi - dp_lo)/(h Phi_f), the mass flux M = Phi_d U in faces.mass (0 on walls), and
+/// the speed |U| for the next step's bound in faces.speed (0 where the donor is dust).
+void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const FlowState& state,
+                               const CellClosures& closures, const AxisPressureFaces& pf, const std::vector<double>& dp,
+                               AxisFaces& faces);
+
+/// Caps the outflow of every dust cell (Phi < kDust Phi_co) at kDustOutflow of its Phi in a step of
+/// length dt: its outgoing mass fluxes (faces.mass of every axis) are scaled down by the factor in
+/// `scale` (1 for every other cell). Dust moves at most about one cell per step instead of setting
+/// dt (assumption F11).
+void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
+                      std::vector<double>& scale, FlowFaces& faces);
+
+/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell: Phi at the end of the step.
+void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
+                           std::vector<double>& Phi_after);
+
+/// Part 3b for `axis`: with M = faces.mass (the hand-over; 0 on walls), the fluxes of momentum and
+/// Phi T as M times the donor's values (all three velocity components, flow/transport_flux.hpp),
+/// and the corrections of the increments: each cell gets the share Phi_after_cell/(Phi_after_lo +
+/// Phi_after_hi) of the increment force dp_lo - dp_hi, so both end the step with the same velocity
+/// change (shares by the masses at t^n once gave dust next to a cell filling up in this step
+/// hundreds of m/s).
+void semi_implicit_face_fluxes(const FlowMesh& mesh, int axis, const FlowState& state, const AxisPressureFaces& pf,
+                               const std::vector<double>& dp, const std::vector<double>& Phi_after, AxisFaces& faces);
 
 }  // namespace granseg

@@ -35,7 +35,8 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
                               const FlowFaces& faces);
 
 /// The rates of the semi-implicit step: material speeds |u_n| of the cells and |U| (faces.speed)
-/// of the last step's faces, and twice the outflow rate of the last step's mass fluxes. The first
+/// of the last step's faces, and twice the outflow rate of the last step's mass fluxes, without
+/// dust cells (their outflow is capped, flow/semi_implicit.hpp, assumption F11). The first
 /// step also counts the sound speed, as the explicit step does: it starts from a state that need
 /// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step).
 StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
@@ -44,11 +45,23 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
 /// Largest ratio of a semi-implicit step to the one before it.
 constexpr double kStepGrowth = 2.0;
 
+/// What set a step's dt: dt_max or t_end, the CFL condition, the outflow or compaction bound,
+/// the semi-implicit step's growth limit (kStepGrowth), or halving after a broken bound.
+enum class StepBound { dt_max, cfl, outflow, compaction, growth, halved };
+constexpr int kStepBounds = 6;
+/// The bound's name as in the output tables ("dt_max", "cfl", ...).
+const char* step_bound_name(StepBound bound);
+
+struct StepSize {
+    double dt;
+    StepBound bound;
+};
+
 /// dt from the rates (cfl on the wave rate, kOutflowFraction and kCompactionFraction on the
-/// others), dt_max and t_end - t. Throws InvariantError naming the bound that set it if dt falls
-/// below dt_min before t_end.
-double time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
-                          const StepRates& rates, const FlowState& state, const CellClosures& closures);
+/// others), dt_max and t_end - t, and which of them set it. Throws InvariantError naming the bound
+/// that set it if dt falls below dt_min before t_end.
+StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
+                   const StepRates& rates, const FlowState& state, const CellClosures& closures);
 
 /// Whether the fluxes of a step of length dt keep every cell within the bounds of the explicit
 /// step: outflow at most kOutflowFraction of Phi_before, net inflow at most kCompactionFraction of

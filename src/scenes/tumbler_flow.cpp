@@ -62,11 +62,18 @@ struct TumblerFlow : SceneJob {
         sample();
         advance_flow(solver, t_end, "tumbler-flow", sample);
 
-        DataTable summary({"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change"});
+        std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change"};
+        std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
+                                   static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0};
+        for (int b = 0; b < kStepBounds; ++b) {  // how many steps each bound of the time step set
+            columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
+            values.push_back(static_cast<double>(solver.counters().set_by[b]));
+        }
+        DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
-                        format_number(run_options.angle_from) + " s; mass_change relative");
-        summary.row({solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
-                     static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0});
+                        format_number(run_options.angle_from) + " s; mass_change relative; steps_X: steps whose dt "
+                        "the bound X set (docs/flow_solver.md Sect. 3)");
+        summary.row(values);
         out.add("history.dat", history);
         out.add("summary.dat", summary);
         out.add("fields_lab.dat", flow_field_table(solver, true));
