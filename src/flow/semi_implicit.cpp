@@ -97,7 +97,7 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         // would feed that cell's velocity back to it with no friction in between).
         const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
         const std::size_t up = mean > 0.0 ? lo : hi;
-        const bool dilute = Phi[up] < kDust * Phi_co[up];
+        const bool dilute = is_dust(Phi[up], Phi_co[up]);
         const double V = dilute ? u[up] : mean;
         const double V_A = dilute ? acc[up] : mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
         const double U = V + dt * pf.force[f] / (h * Phi_f) - V_A;
@@ -107,7 +107,7 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         pf.donor[f] = donor;
         // Between two dust cells the face stays explicit (dry face): the pressure increments there
         // are only an extension of their neighbours' and would push on almost no mass.
-        const bool dust = Phi[lo] < kDust * Phi_co[lo] && Phi[hi] < kDust * Phi_co[hi];
+        const bool dust = is_dust(Phi[lo], Phi_co[lo]) && is_dust(Phi[hi], Phi_co[hi]);
         pf.coupling[f] = dust ? 0.0 : (dt / h) * (dt / h) * donor / Phi_f;
     });
     const double rate = dt / h;
@@ -143,7 +143,7 @@ void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const Flo
             U = pf.predictor[f] + (pf.coupling[f] > 0.0 ? dt * (dp[lo] - dp[hi]) / (h * 0.5 * (Phi[lo] + Phi[hi])) : 0.0);
         const std::size_t from = U > 0.0 ? lo : hi;
         out.mass[f] = pf.donor[f] * U;
-        out.speed[f] = Phi[from] < kDust * Phi_co[from] ? 0.0 : std::fabs(U);
+        out.speed[f] = is_dust(Phi[from], Phi_co[from]) ? 0.0 : std::fabs(U);
     });
 }
 
@@ -155,7 +155,7 @@ void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, c
     double* s = scale.data();
     mesh.for_each_inside([&](std::size_t c) { s[c] = 1.0; });
     mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
-        if (!(Phi[c] < kDust * Phi_co[c])) return;
+        if (!is_dust(Phi[c], Phi_co[c])) return;
         double out = 0.0;  // the share of Phi that leaves in this step
         for (int a = 0; a < 3; ++a) {
             if (rate[a] == 0.0) continue;

@@ -92,6 +92,8 @@ long mark_reversed_faces(const FlowMesh& mesh, int axis, const FlowState& state,
 /// Below this share of Phi_co a cell is dust: as a donor it carries its material at its own
 /// velocity, and its outflow is capped (dust_outflow_scale) instead of bounding dt (assumption F11).
 constexpr double kDust = 1e-3;
+/// Whether a cell with volume fraction Phi and Phi_co is dust (Phi < kDust Phi_co).
+inline bool is_dust(double Phi, double Phi_co) { return Phi < kDust * Phi_co; }
 /// The share of a dust cell's Phi that may leave it in one step.
 constexpr double kDustOutflow = 0.5;
 

@@ -61,7 +61,7 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
             const std::size_t c = nx * r + i;
             if (!mesh.inside[c]) continue;
-            const double own = Phi[c] < kDust * Phi_co[c] ? 0.0 : 1.0;  // dust: its outflow is capped instead
+            const double own = is_dust(Phi[c], Phi_co[c]) ? 0.0 : 1.0;  // dust: its outflow is capped instead
             double cfl = 0.0, out = 0.0;
             for (int a = 0; a < 3; ++a) {
                 if (inv_h[a] == 0.0) continue;
