@@ -6,7 +6,6 @@
 #include "flow/convection.hpp"
 #include "flow/loads.hpp"
 #include "flow/primitives.hpp"
-#include "flow/temperature.hpp"
 #include "flow/velocity_gradient.hpp"
 #include "flow/viscosity.hpp"
 
@@ -35,7 +34,8 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
       settings_(settings),
       frame_(frame),
       pressure_solver_(mesh_),
-      lines_(mesh_) {
+      lines_(mesh_),
+      temperature_(mesh_) {
     const Grid& g = mesh_.grid;
     if (frame_.omega != 0.0 && (g.periodic[0] || g.periodic[2]))
         throw InputError("FlowSolver: a rotating frame needs walls (not periodic ends) along x and z");
@@ -225,7 +225,7 @@ double FlowSolver::step(double t_end) {
         settings_.time_stepping == TimeStepping::semi_implicit ? semi_implicit_step(t_end) : explicit_step(t_end);
     gradient_valid_ = false;
     t0 = clock::now();
-    implicit_temperature(mesh_, settings_, walls_, dt, closures_, lines_, heat_, work_, state_);
+    counters_.temperature_iterations += temperature_.apply(mesh_, settings_, walls_, dt, closures_, heat_, state_);
     timers_.temperature += seconds_since(t0);
 
     t_ += dt;

@@ -30,6 +30,7 @@
 #include "closures/material.hpp"
 #include "core/grid.hpp"
 #include "flow/coupled_viscosity.hpp"
+#include "flow/temperature.hpp"
 #include "flow/diffusion_lines.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
@@ -54,9 +55,10 @@ struct FlowTimers {
 
 /// The work of the steps (for benchmarks and run summaries): pressure solves, their Newton steps
 /// and conjugate-gradient iterations, step attempts repeated with half the dt (semi-implicit),
-/// and how many steps each bound of flow/time_step.hpp set.
+/// the conjugate-gradient iterations of the temperature solves (both modes), and how many steps
+/// each bound of flow/time_step.hpp set.
 struct FlowCounters {
-    long pressure_solves = 0, newton = 0, krylov = 0, repeated = 0;
+    long pressure_solves = 0, newton = 0, krylov = 0, repeated = 0, temperature_iterations = 0;
     std::array<long, kStepBounds> set_by{};
 };
 
@@ -146,6 +148,7 @@ private:
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
+    TemperatureSolver temperature_;
     std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
     std::vector<double> work_, heat_;  // one value per cell, work space of the kernels
     FlowTimers timers_;

@@ -1,15 +1,29 @@
 #include "flow/temperature.hpp"
 
+#include "core/error.hpp"
+#include "core/format.hpp"
+#include "flow/diffusion_lines.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+
 #include <algorithm>
 
 namespace granseg {
 
-void implicit_temperature(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
-                          const CellClosures& cl, DiffusionLines& lines, std::vector<double>& heat,
-                          std::vector<double>& work, FlowState& state) {
+namespace {
+/// Relative residual the conjugate gradients aim at: near round-off, so that a uniform shear keeps
+/// a uniform T to ~1e-13 and a slab periodic along y repeats its 2-D plane (verify_flow_shear,
+/// verify_flow_rotation). The condition number is small (see the header): ~20 iterations.
+constexpr double kTolerance = 1e-13;
+/// Round-off may stop the iterations short of kTolerance; a residual above this is an error.
+constexpr double kAcceptable = 1e-9;
+/// Far more than the iterations the bounded condition number needs.
+constexpr int kMaxIterations = 500;
+}  // namespace
+
+void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const CellClosures& cl, const FlowState& state,
+                     std::vector<double>& heat) {
     const std::size_t nx = mesh.grid.n[0];
-    const double Phi_vac = settings.Phi_vacuum, T_floor = settings.T_floor;
-    // 1. Heating and dissipation.
     const double* eta = cl.eta.data();
     const unsigned char* in = mesh.inside.data();
     const auto& u = state.u;
@@ -43,24 +57,53 @@ void implicit_temperature(const FlowMesh& mesh, const FlowSettings& settings, co
             }
         }
     }
-    std::vector<double>&T = state.T;
+}
+
+TemperatureSolver::TemperatureSolver(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)) {
+    rhs_.setZero(pattern_.matrix.rows());
+    T_.setZero(pattern_.matrix.rows());
+}
+
+int TemperatureSolver::apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
+                             const CellClosures& cl, std::vector<double>& heat, FlowState& state) {
+    viscous_heating(mesh, walls, cl, state, heat);
     const std::vector<double>& Phi = state.Phi;
-    mesh.for_each_inside([&](std::size_t c) {
-        T[c] = Phi[c] <= Phi_vac ? T_floor : (Phi[c] * T[c] + dt * 1.5 * heat[c]) / (Phi[c] + dt * cl.epsPhi[c]);  // eq. (14)
-    });
-    // 2. Conduction, one axis after the other.
+    std::vector<double>& T = state.T;
+    auto active = [&](std::size_t c) { return Phi[c] > settings.Phi_vacuum; };
+    double* value = pattern_.matrix.valuePtr();
+    std::fill(value, value + pattern_.matrix.nonZeros(), 0.0);
+    // Mass, dissipation and heating (eq. 14); an empty cell is an identity row at T_floor.
+    for (std::size_t c : mesh.inside_cells) {
+        const long r = pattern_.unknown[c];
+        value[pattern_.diagonal[r]] = active(c) ? Phi[c] + dt * cl.epsPhi[c] : 1.0;
+        rhs_[r] = active(c) ? Phi[c] * T[c] + dt * 1.5 * heat[c] : settings.T_floor;
+        T_[r] = active(c) ? T[c] : settings.T_floor;  // the warm start
+    }
+    // Conduction (3/2) div(lambda grad T) between cells that both hold material; walls adiabatic.
     for (int a = 0; a < 3; ++a) {
         if (!mesh.active[a]) continue;
-        lines.factor(mesh, a, 1.5 * dt / (mesh.grid.h[a] * mesh.grid.h[a]), Phi, cl.lambda, false, Phi_vac);
-        mesh.for_each_inside([&](std::size_t c) { work[c] = Phi[c] <= Phi_vac ? T_floor : Phi[c] * T[c]; });
-        lines.solve(work);
-        T.swap(work);
+        const double r = 1.5 * dt / (mesh.grid.h[a] * mesh.grid.h[a]);
+        for (const MeshFace& f : mesh.faces[a]) {
+            if (f.kind != kInterior || f.repeat || !active(f.lo) || !active(f.hi)) continue;
+            const double w = r * harmonic_mean(cl.lambda[f.lo], cl.lambda[f.hi]);
+            value[pattern_.diagonal[pattern_.unknown[f.lo]]] += w;
+            value[pattern_.diagonal[pattern_.unknown[f.hi]]] += w;
+            value[pattern_.entry[a][f.f]] -= w, value[pattern_.mirror[a][f.f]] -= w;
+        }
     }
-    // 3. Floor (docs/assumptions.md) and the conserved variable.
-    mesh.for_each_inside([&](std::size_t c) {
-        T[c] = std::max(T[c], T_floor);
+    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> cg;  // Jacobi preconditioner
+    cg.setTolerance(kTolerance);
+    cg.setMaxIterations(kMaxIterations);
+    cg.compute(pattern_.matrix);
+    T_ = cg.solveWithGuess(rhs_, T_);
+    if (cg.info() != Eigen::Success && !(cg.error() <= kAcceptable))
+        throw InvariantError("flow: the temperature equation did not converge in " + std::to_string(kMaxIterations) +
+                             " iterations (relative residual " + format_number(cg.error()) + ")");
+    for (std::size_t c : mesh.inside_cells) {
+        T[c] = std::max(T_[pattern_.unknown[c]], settings.T_floor);  // floor: docs/assumptions.md F2
         state.E[c] = Phi[c] * T[c];
-    });
+    }
+    return static_cast<int>(cg.iterations());
 }
 
 }  // namespace granseg

@@ -1,0 +1,87 @@
+// The temperature step (flow/temperature.hpp) against exact discrete solutions: heating,
+// dissipation and conduction solved together. One long step must give the steady balance of a
+// sheared layer heated at one face, where the heat reaches only a few cells before dissipation
+// takes it (conducting first and dissipating after would spread it over the whole column).
+#include "flow/temperature.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+using namespace granseg;
+
+namespace {
+
+constexpr int kCells = 16;                          // along z; 2 periodic cells along x
+constexpr double kPhi = 0.5, kEta = 2e-3, kLambda = 5.0, kEpsPhi = 4e3, kShear = 1.0;
+
+struct Column {
+    Grid grid = [] {
+        Grid g = Grid::plane_xz(2, kCells, 0.0, 0.0, 2.0 / kCells, 1.0);
+        g.periodic[0] = true;
+        return g;
+    }();
+    FlowMesh mesh{grid};
+    FlowState state;
+    CellClosures closures;
+    WallVelocities walls{};
+    std::vector<double> heat = std::vector<double>(grid.cells(), 0.0);
+
+    /// Uniform Phi and closures, T = T0; u_x = 0 in the lower half, kShear in the upper half
+    /// (the upper wall moves with it), so only the two cells at the middle face are heated.
+    explicit Column(double T0) {
+        const std::size_t n = grid.cells();
+        state.Phi.assign(n, kPhi), state.T.assign(n, T0), state.E.assign(n, kPhi * T0);
+        for (int b = 0; b < 3; ++b) state.u[b].assign(n, 0.0), state.m[b].assign(n, 0.0);
+        for (int k = kCells / 2; k < kCells; ++k)
+            for (int i = 0; i < 2; ++i) state.u[0][grid.index(i, 0, k)] = kShear;
+        walls[2][1] = {kShear, 0.0, 0.0};
+        closures.eta.assign(n, kEta), closures.lambda.assign(n, kLambda), closures.epsPhi.assign(n, kEpsPhi);
+    }
+    double T(int k) const { return state.T[grid.index(0, 0, k)]; }
+};
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(temperature)
+
+// Upper half k' = k - kCells/2 = 0 .. m-1 (m = kCells/2), by symmetry about the middle face:
+//   (e + w) T_0 - w T_1 = S,   (e + 2w) T_k' - w (T_k'+1 + T_k'-1) = 0,   adiabatic top (ghost = T_m-1),
+// e = eps Phi + Phi/dt, w = (3/2) lambda/h^2, S = (3/2) (eta/2) (U/h)^2 (half the face's heating).
+// Solution T_k' = C cosh(theta (k' - m + 1/2)) with cosh(theta) = 1 + e/(2w). The conjugate-gradient
+// tolerance (1e-10 relative residual, condition number below 1 + 4w/e = 2.9) bounds the error by ~1e-9.
+BOOST_AUTO_TEST_CASE(long_step_gives_the_steady_balance_of_heating_dissipation_and_conduction) {
+    Column col(0.0);
+    const double dt = 1e3, h = 1.0 / kCells;
+    FlowSettings settings;
+    settings.T_floor = 1e-30;
+    TemperatureSolver(col.mesh).apply(col.mesh, settings, col.walls, dt, col.closures, col.heat, col.state);
+    const double e = kEpsPhi + kPhi / dt, w = 1.5 * kLambda / (h * h), S = 1.5 * 0.5 * kEta * kShear * kShear / (h * h);
+    const double theta = std::acosh(1.0 + e / (2.0 * w)), m = kCells / 2;
+    const double C = S / ((e + w) * std::cosh(theta * (m - 0.5)) - w * std::cosh(theta * (m - 1.5)));
+    for (int k = 0; k < kCells / 2; ++k) {
+        const double exact = C * std::cosh(theta * (k - m + 0.5));
+        BOOST_TEST(col.T(kCells / 2 + k) == exact, boost::test_tools::tolerance(1e-8));
+        BOOST_TEST(col.T(kCells / 2 - 1 - k) == exact, boost::test_tools::tolerance(1e-8));
+    }
+    // Conduction matters here (w/e = 0.48): T_0 = S/(e + w (1 - r)) with r = exp(-theta), 26 % below S/e.
+    BOOST_TEST(std::fabs(col.T(kCells / 2) - S / e) > 0.1 * S / e);
+}
+
+// Without heating a uniform T decays as Phi T/(Phi + dt eps Phi), conduction doing nothing; an
+// empty cell is at T_floor.
+BOOST_AUTO_TEST_CASE(uniform_decay_is_exact_and_empty_cells_sit_at_the_floor) {
+    Column col(2.0);
+    for (auto& u : col.state.u[0]) u = 0.0;
+    col.walls[2][1] = {0.0, 0.0, 0.0};
+    const std::size_t hole = col.grid.index(1, 0, 5);
+    col.state.Phi[hole] = 0.0;
+    FlowSettings settings;
+    const double dt = 1e-3;
+    TemperatureSolver(col.mesh).apply(col.mesh, settings, col.walls, dt, col.closures, col.heat, col.state);
+    for (std::size_t c = 0; c < col.grid.cells(); ++c)
+        if (c != hole) BOOST_TEST(col.state.T[c] == 2.0 * kPhi / (kPhi + dt * kEpsPhi), boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(col.state.T[hole] == settings.T_floor);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
