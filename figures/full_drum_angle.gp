@@ -17,16 +17,19 @@ semi_small(c) = $2 == 1 && $3 < 5e-4 ? c : 1/0
 dx = 0.05
 stats f u 11 nooutput
 friction = STATS_mean
-# the first-order line a + b h through the explicit runs (bench_drum_angle prints the same fit)
+# the first-order lines a + b h through each mode's runs at dt_max 1 ms (bench_drum_angle prints the same fits)
 set fit quiet nolog
 a = 20.0; b = 1.0
 fit a + b * x f u (explicit($4)):7 via a, b
+c = 20.0; d = 1.0
+fit c + d * x f u (semi($4)):7 via c, d
 set title "(a) dynamic angle of repose: mean +- standard deviation"
 set ylabel "angle [deg]"
 set key top right
 set yrange [10:35]
 plot friction w l lw 2 dt 2 lc rgb "black" t sprintf("friction angle atan(mu) = %.2f deg", friction), \
      a + b * x w l lw 1.5 lc rgb "#1f77b4" dt 3 t sprintf("explicit, line a + b h: a = %.2f deg", a), \
+     c + d * x w l lw 1.5 lc rgb "#d62728" dt 3 t sprintf("semi-implicit, line: %.2f deg at h = 0", c), \
      f u (explicit($4)):7:8 w yerrorlines pt 7 ps 1.3 lc rgb "#1f77b4" t "explicit", \
      f u (semi($4 + dx)):7:8 w yerrorlines pt 5 ps 1.3 lc rgb "#d62728" t "semi-implicit, dt_max 1 ms", \
      f u (semi_small($4 + dx)):7:8 w yerrorlines pt 9 ps 1.5 lc rgb "#2ca02c" t "semi-implicit, dt_max 0.1 ms"
