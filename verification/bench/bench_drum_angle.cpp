@@ -14,8 +14,8 @@
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //
-// Run: build/bench/bench_drum_angle [--data DIR]   (long: about 35 minutes on one thread, a third
-// of it the 100-cell explicit run)
+// Run: build/bench/bench_drum_angle [--data DIR]   (long: 41 minutes on one thread of the shared
+// machine on 2 December 2026, 18 of them the 100-cell explicit run)
 #include "closures/packing.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
