@@ -15,9 +15,9 @@
 //      Coriolis rotation of u over dt (exact) (flow/convection.hpp);
 //   4. implicit viscosity d(Phi u)/dt = div(eta grad u), split by axis into line solves
 //      (flow/viscosity.hpp);
-//   5. temperature: heating (3/2) eta kappa:kappa against dissipation eps Phi T, linearly implicit
-//      (T relaxes towards (3/2)(eta0/eps0) kappa:kappa, eq. 45), then implicit conduction
-//      (3/2) div(lambda grad T) by line solves; T >= T_floor (flow/temperature.hpp).
+//   5. temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
+//      (3/2) div(lambda grad T) implicit in one sparse system (T relaxes towards
+//      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow/temperature.hpp).
 // Walls: no-slip (moving domain-boundary walls allowed), adiabatic, no mass flux. An axis with
 // one cell is inactive (the field does not vary along it). Embedded walls: grid.inside.
 //
@@ -30,7 +30,6 @@
 #include "closures/material.hpp"
 #include "core/grid.hpp"
 #include "flow/coupled_viscosity.hpp"
-#include "flow/temperature.hpp"
 #include "flow/diffusion_lines.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
@@ -38,6 +37,7 @@
 #include "flow/frame.hpp"
 #include "flow/pressure_solver.hpp"
 #include "flow/semi_implicit.hpp"
+#include "flow/temperature.hpp"
 #include "flow/time_step.hpp"
 
 #include <array>

@@ -1,11 +1,9 @@
 #include "flow/pressure_solver.hpp"
 
-#include <cfloat>
-#include <cmath>
-
 #include "flow/equation_of_state.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace granseg {
