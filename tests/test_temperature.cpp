@@ -48,8 +48,9 @@ BOOST_AUTO_TEST_SUITE(temperature)
 // Upper half k' = k - kCells/2 = 0 .. m-1 (m = kCells/2), by symmetry about the middle face:
 //   (e + w) T_0 - w T_1 = S,   (e + 2w) T_k' - w (T_k'+1 + T_k'-1) = 0,   adiabatic top (ghost = T_m-1),
 // e = eps Phi + Phi/dt, w = (3/2) lambda/h^2, S = (3/2) (eta/2) (U/h)^2 (half the face's heating).
-// Solution T_k' = C cosh(theta (k' - m + 1/2)) with cosh(theta) = 1 + e/(2w). The conjugate-gradient
-// tolerance (1e-10 relative residual, condition number below 1 + 4w/e = 2.9) bounds the error by ~1e-9.
+// Solution T_k' = C cosh(theta (k' - m + 1/2)) with cosh(theta) = 1 + e/(2w). The solver stops at
+// 1e-8 of the change's initial residual; with the condition number below 1 + 4w/e = 2.9 the error
+// is below 3e-8 of the change (here T itself, T* = 0): 1e-7 of the largest T.
 BOOST_AUTO_TEST_CASE(long_step_gives_the_steady_balance_of_heating_dissipation_and_conduction) {
     Column col(0.0);
     const double dt = 1e3, h = 1.0 / kCells;
@@ -59,17 +60,18 @@ BOOST_AUTO_TEST_CASE(long_step_gives_the_steady_balance_of_heating_dissipation_a
     const double e = kEpsPhi + kPhi / dt, w = 1.5 * kLambda / (h * h), S = 1.5 * 0.5 * kEta * kShear * kShear / (h * h);
     const double theta = std::acosh(1.0 + e / (2.0 * w)), m = kCells / 2;
     const double C = S / ((e + w) * std::cosh(theta * (m - 0.5)) - w * std::cosh(theta * (m - 1.5)));
+    const double T_max = C * std::cosh(theta * (m - 0.5));
     for (int k = 0; k < kCells / 2; ++k) {
         const double exact = C * std::cosh(theta * (k - m + 0.5));
-        BOOST_TEST(col.T(kCells / 2 + k) == exact, boost::test_tools::tolerance(1e-8));
-        BOOST_TEST(col.T(kCells / 2 - 1 - k) == exact, boost::test_tools::tolerance(1e-8));
+        BOOST_TEST(std::fabs(col.T(kCells / 2 + k) - exact) <= 1e-7 * T_max);
+        BOOST_TEST(std::fabs(col.T(kCells / 2 - 1 - k) - exact) <= 1e-7 * T_max);
     }
     // Conduction matters here (w/e = 0.48): T_0 = S/(e + w (1 - r)) with r = exp(-theta), 26 % below S/e.
     BOOST_TEST(std::fabs(col.T(kCells / 2) - S / e) > 0.1 * S / e);
 }
 
-// Without heating a uniform T decays as Phi T/(Phi + dt eps Phi), conduction doing nothing; an
-// empty cell is at T_floor.
+// Without heating a uniform T decays as Phi T/(Phi + dt eps Phi), conduction doing nothing (to
+// 1e-7 of the change, as above); an empty cell is at T_floor.
 BOOST_AUTO_TEST_CASE(uniform_decay_is_exact_and_empty_cells_sit_at_the_floor) {
     Column col(2.0);
     for (auto& u : col.state.u[0]) u = 0.0;
@@ -79,8 +81,9 @@ BOOST_AUTO_TEST_CASE(uniform_decay_is_exact_and_empty_cells_sit_at_the_floor) {
     FlowSettings settings;
     const double dt = 1e-3;
     TemperatureSolver(col.mesh).apply(col.mesh, settings, col.walls, dt, col.closures, col.heat, col.state);
+    const double exact = 2.0 * kPhi / (kPhi + dt * kEpsPhi);
     for (std::size_t c = 0; c < col.grid.cells(); ++c)
-        if (c != hole) BOOST_TEST(col.state.T[c] == 2.0 * kPhi / (kPhi + dt * kEpsPhi), boost::test_tools::tolerance(1e-9));
+        if (c != hole) BOOST_TEST(std::fabs(col.state.T[c] - exact) <= 1e-7 * (2.0 - exact));
     BOOST_TEST(col.state.T[hole] == settings.T_floor);
 }
 

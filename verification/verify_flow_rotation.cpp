@@ -41,8 +41,7 @@ constexpr double kNoHeating = 1e-12;
 // 3-D slab against 2-D with equal steps (the CFL condition counts the waves along y, so both runs
 // take dt_max): the y direction adds fluxes between identical states (exactly zero), cyclic
 // line solves of constant data (exact up to rounding) and, in the temperature's conjugate
-// gradients (converged to 1e-13, flow/temperature.cpp), sums over the slab's copies in another
-// order; the runs may differ by the rounding of a few operations per step, amplified at most by
+// gradients (flow/temperature.cpp), sums over the slab's copies in another order; the runs may differ by the rounding of a few operations per step, amplified at most by
 // the 10^4 steps: 1e-10 in Phi and T.
 constexpr double kSlabTol = 1e-10;
 // The coupled viscosity solve (the semi-implicit mode's default) eliminates the 3-D matrix in

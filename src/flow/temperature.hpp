@@ -12,7 +12,8 @@
 // then could not heat itself off the floor, and the drum stick-slipped at long steps.
 // The matrix is symmetric positive definite and an M-matrix (positive data give positive T); its
 // conduction is at most 2 d (3 lambda0/(2 eps0 h^2)) times its dissipation in d dimensions, so
-// Jacobi-preconditioned conjugate gradients converge in a few iterations at any dt.
+// Jacobi-preconditioned conjugate gradients, solving for the change T_new - T*, converge in a few
+// iterations at any dt.
 #pragma once
 
 #include "flow/cell_pattern.hpp"
@@ -41,7 +42,7 @@ public:
               const CellClosures& closures, std::vector<double>& heat, FlowState& state);
 
 private:
-    using Matrix = Eigen::SparseMatrix<double>;
+    using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; values rewritten each step
     Eigen::VectorXd rhs_, T_;
 };
