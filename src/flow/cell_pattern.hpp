@@ -22,6 +22,15 @@ struct CellPattern {
     std::array<std::vector<long>, 3> mirror; // and of (hi, lo)
     std::vector<long> diagonal;              // value index of each row's diagonal
     Matrix matrix;                           // the pattern, compressed (values 0 until a user writes them)
+
+    /// Adds the weight w of the interior face f of `axis` between its two cells to the values of
+    /// `matrix` (value = matrix.valuePtr()): +w on both diagonals, -w on both off-diagonal entries.
+    void couple(double* value, int axis, const MeshFace& f, double w) const {
+        value[diagonal[unknown[f.lo]]] += w;
+        value[diagonal[unknown[f.hi]]] += w;
+        value[entry[axis][f.f]] -= w;
+        value[mirror[axis][f.f]] -= w;
+    }
 };
 
 /// The pattern of `mesh` in a sparse matrix of type Matrix (row- or column-major).

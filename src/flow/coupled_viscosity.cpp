@@ -51,9 +51,10 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
                 if (f.repeat) continue;
                 const double w = r * harmonic_mean(eta[f.lo], eta[f.hi]);
                 const bool lo = active(f.lo), hi = active(f.hi);
-                if (lo) value[pattern_.diagonal[pattern_.unknown[f.lo]]] += w;
-                if (hi) value[pattern_.diagonal[pattern_.unknown[f.hi]]] += w;
-                if (lo && hi) value[pattern_.entry[a][f.f]] -= w, value[pattern_.mirror[a][f.f]] -= w;
+                if (lo && hi)
+                    pattern_.couple(value, a, f, w);
+                else if (lo || hi)
+                    value[pattern_.diagonal[pattern_.unknown[lo ? f.lo : f.hi]]] += w;
                 continue;
             }
             const std::size_t c = f.lo;  // a wall: both sides name the inside cell

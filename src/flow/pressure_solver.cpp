@@ -65,11 +65,8 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     std::fill(value, value + laplacian_.nonZeros(), 0.0);
     for (int a = 0; a < 3; ++a)
         for (const MeshFace& f : mesh.faces[a])
-            if (f.kind == kInterior && !f.repeat && faces[a].coupling[f.f] != 0.0) {
-                const double k = faces[a].coupling[f.f];
-                value[pattern_.entry[a][f.f]] -= k, value[pattern_.mirror[a][f.f]] -= k;
-                value[pattern_.diagonal[pattern_.unknown[f.lo]]] += k, value[pattern_.diagonal[pattern_.unknown[f.hi]]] += k;
-            }
+            if (f.kind == kInterior && !f.repeat && faces[a].coupling[f.f] != 0.0)
+                pattern_.couple(value, a, f, faces[a].coupling[f.f]);
     std::copy(value, value + laplacian_.nonZeros(), J_.valuePtr());
     Eigen::VectorXd base(rows), target(rows);
     x_.resize(rows), slope_.resize(rows), F_.resize(rows);

@@ -85,10 +85,7 @@ int TemperatureSolver::apply(const FlowMesh& mesh, const FlowSettings& settings,
         const double r = 1.5 * dt / (mesh.grid.h[a] * mesh.grid.h[a]);
         for (const MeshFace& f : mesh.faces[a]) {
             if (f.kind != kInterior || f.repeat || !active(f.lo) || !active(f.hi)) continue;
-            const double w = r * harmonic_mean(cl.lambda[f.lo], cl.lambda[f.hi]);
-            value[pattern_.diagonal[pattern_.unknown[f.lo]]] += w;
-            value[pattern_.diagonal[pattern_.unknown[f.hi]]] += w;
-            value[pattern_.entry[a][f.f]] -= w, value[pattern_.mirror[a][f.f]] -= w;
+            pattern_.couple(value, a, f, r * harmonic_mean(cl.lambda[f.lo], cl.lambda[f.hi]));
         }
     }
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> cg;  // Jacobi preconditioner
