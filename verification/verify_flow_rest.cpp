@@ -167,14 +167,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     const Run box = settle(m, mode, 6, column30, kBalanced, nullptr);
     double change = 0.0;
     for (int k = 0; k < 30; ++k) change = std::max(change, std::fabs(box.Phi[k] - column30[k]));
-    if (mode == TimeStepping::explicit_waves) {
-        table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
-        table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): spread of Phi across rows", box.spread, kRowRoundOff);
-    } else {  // the dust the semi-implicit settling leaves above the surface still creeps
-        table.note(verify::mode_tag(mode) + verify::kKnownDefect + "box 6 x 30 (walls): max |Phi - settled column| after 2 s = " +
-                   verify::format(change) + ", spread of Phi across rows = " + verify::format(box.spread) + " (tolerance " +
-                   verify::format(kRowRoundOff) + ")");
-    }
+    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
+    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): spread of Phi across rows", box.spread, kRowRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi u| after 2 s (m/s)", box.momentum, kMomentumRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): relative mass change", std::fabs(box.mass_change), mass_bound(box.steps));
 

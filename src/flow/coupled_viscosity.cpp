@@ -25,6 +25,7 @@ CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
 
 void CoupledViscosity::set_up() {
     rhs_.setZero(pattern_.matrix.rows(), 3);
+    mass_.setZero(pattern_.matrix.rows());
     ldlt_.analyzePattern(pattern_.matrix);  // the fill-reducing ordering, once per pattern
 }
 
@@ -39,6 +40,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         value[pattern_.diagonal[r]] = active(c) ? Phi[c] : 1.0;
+        mass_[r] = active(c) ? Phi[c] : 0.0;
         for (int b = 0; b < 3; ++b) rhs_(r, b) = active(c) ? Phi[c] * state.u[b][c] : 0.0;
     }
     // Viscous couplings; an active cell next to an empty one keeps its weight on the diagonal
@@ -77,6 +79,19 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
             state.u[b][c] = u(pattern_.unknown[c], b);
             state.m[b][c] = Phi[c] * state.u[b][c];
         }
+}
+
+void CoupledViscosity::diffuse_change(const FlowMesh& mesh, std::array<std::vector<double>, 3>& du) {
+    for (std::size_t c : mesh.inside_cells) {
+        const long r = pattern_.unknown[c];
+        for (int b = 0; b < 3; ++b) rhs_(r, b) = mass_[r] * du[b][c];
+    }
+    const Eigen::MatrixXd w = ldlt_.solve(rhs_);
+    for (std::size_t c : mesh.inside_cells) {
+        const long r = pattern_.unknown[c];
+        if (mass_[r] > 0.0)
+            for (int b = 0; b < 3; ++b) du[b][c] = w(r, b);
+    }
 }
 
 }  // namespace granseg

@@ -36,12 +36,16 @@ public:
     /// Updates u and Phi u of `state` (reads Phi, u) for a step dt with eta per cell.
     void apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
                const std::vector<double>& eta, FlowState& state);
+    /// Solves the system of the last apply() again for a velocity change du (walls at rest):
+    /// du <- (Phi - dt div eta grad)^(-1) Phi du in the cells active then; others keep du.
+    void diffuse_change(const FlowMesh& mesh, std::array<std::vector<double>, 3>& du);
 
 private:
     using Matrix = Eigen::SparseMatrix<double>;
     void set_up();
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
+    Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)
     Eigen::SimplicialLDLT<Matrix> ldlt_;
 };
 

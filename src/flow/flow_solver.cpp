@@ -51,6 +51,10 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         state_.m[b].assign(cells, 0.0);
         state_.u[b].assign(cells, 0.0);
         force_part_[b].assign(cells, 0.0);
+        u_star_[b].assign(cells, 0.0);
+        change_u_[b].assign(cells, 0.0);
+        increment_.u[b].assign(cells, 0.0);
+        increment_.m[b].assign(cells, 0.0);
         loads_[b].load.assign(cells, 0.0);
         loads_[b].carry.assign(cells, 0.0);
     }
@@ -153,6 +157,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         timers_.convection += seconds_since(t0);
         t0 = clock::now();
         viscosity(dt);
+        diffuse_change(dt, force_part_);  // the share of u* the forces made (walls at rest)
         timers_.viscosity += seconds_since(t0);
         t0 = clock::now();
         // 2., 3. Face predictor, pressure increments, corrected faces; the donors of faces the
@@ -199,10 +204,14 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
     }
     // 3. Transport and the corrections of the increments (the predictor already carries gravity,
     // Coriolis and the sources): Phi_new = Phi - dt div M exactly.
+    for (int b = 0; b < 3; ++b) u_star_[b] = state_.u[b];
     Frame none;
     none.gravity = 0.0;
     explicit_update(mesh_, settings_, none, FlowSource{}, t_, dt, faces_, state_.Phi, state_);
     timers_.convection += seconds_since(t0);
+    t0 = clock::now();
+    viscous_increment(dt);
+    timers_.viscosity += seconds_since(t0);
     return {dt, bound};
 }
 
@@ -213,6 +222,33 @@ void FlowSolver::viscosity(double dt) {
     }
     if (!coupled_) coupled_.emplace(mesh_);
     coupled_->apply(mesh_, settings_, walls_, dt, closures_.eta, state_);
+}
+
+void FlowSolver::diffuse_change(double dt, std::array<std::vector<double>, 3>& du) {
+    if (viscosity_solve(settings_) == ViscositySolve::coupled) return coupled_->diffuse_change(mesh_, du);
+    for (int b = 0; b < 3; ++b) increment_.u[b] = du[b];
+    increment_.Phi = Phi_before_;
+    implicit_viscosity(mesh_, settings_, WallVelocities{}, dt, closures_.eta, lines_, work_, increment_);
+    mesh_.for_each_inside([&](std::size_t c) {
+        if (Phi_before_[c] > settings_.Phi_vacuum)
+            for (int b = 0; b < 3; ++b) du[b][c] = increment_.u[b][c];
+    });
+}
+
+void FlowSolver::viscous_increment(double dt) {
+    const double Phi_vac = settings_.Phi_vacuum;
+    mesh_.for_each_inside([&](std::size_t c) {
+        for (int b = 0; b < 3; ++b) change_u_[b][c] = state_.u[b][c] - u_star_[b][c];
+    });
+    diffuse_change(dt, change_u_);
+    // A cell empty at t^n (its row was the identity) or at the end keeps the update's velocity.
+    mesh_.for_each_inside([&](std::size_t c) {
+        if (!(Phi_before_[c] > Phi_vac && state_.Phi[c] > Phi_vac)) return;
+        for (int b = 0; b < 3; ++b) {
+            state_.u[b][c] = u_star_[b][c] + change_u_[b][c];
+            state_.m[b][c] = state_.Phi[c] * state_.u[b][c];
+        }
+    });
 }
 
 double FlowSolver::step(double t_end) {

@@ -122,6 +122,12 @@ private:
     StepSize semi_implicit_step(double t_end);
     /// The implicit viscosity of a step dt, split or coupled as the settings say.
     void viscosity(double dt);
+    /// A velocity change du diffused by the step's viscosity solve with walls at rest (the
+    /// solve is linear: V(u + du) = V(u) + V0(du)); cells empty at t^n keep du.
+    void diffuse_change(double dt, std::array<std::vector<double>, 3>& du);
+    /// The semi-implicit step's velocity change after the predictor (transport, pressure
+    /// increments) diffused like the predictor's: u = u* + V0(u - u*).
+    void viscous_increment(double dt);
     void check_invariants() const;
 
     FlowMesh mesh_;
@@ -144,7 +150,10 @@ private:
     PressureFaces pressure_;
     PressureSolver pressure_solver_;
     std::vector<double> dp_, change_;  // pressure increments of the last step, explicit mass change
-    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces
+    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces, diffused
+    std::array<std::vector<double>, 3> u_star_;      // the predictor's velocity after viscosity
+    std::array<std::vector<double>, 3> change_u_;    // velocity change of the rest of the step
+    FlowState increment_;  // split viscosity's work state for diffuse_change: Phi at t^n and du
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;

@@ -98,9 +98,8 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
         const std::size_t up = mean > 0.0 ? lo : hi;
         const bool dilute = is_dust(Phi[up], Phi_co[up]);
-        const double V = dilute ? u[up] : mean;
-        const double V_A = dilute ? acc[up] : mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
-        const double U = V + dt * pf.force[f] / (h * Phi_f) - V_A;
+        const double U = dilute ? u[up]
+                                : mean + dt * pf.force[f] / (h * Phi_f) - mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
         const bool careful = pf.reversed[f] || U == 0.0;
         const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];
         pf.predictor[f] = U;

@@ -56,10 +56,6 @@ std::string mode_tag(TimeStepping mode);
 /// figures plot the explicit mode's files).
 std::string mode_suffix(TimeStepping mode);
 
-/// The prefix of a note that reports, with its measured value, a check the semi-implicit mode does
-/// not pass yet (its open defects, docs/flow_solver.md Sect. 5): listed in the output, never PASS.
-inline constexpr const char* kKnownDefect = "KNOWN DEFECT of this mode, not checked (docs/flow_solver.md Sect. 5): ";
-
 /// Largest |Phi u| over inside cells (the momentum density, m/s).
 double max_momentum(const FlowSolver& s);
 
