@@ -31,7 +31,7 @@ inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
 
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
-    TimeStepping time_stepping = TimeStepping::explicit_waves;
+    TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 5)
     std::optional<ViscositySolve> viscosity;  // unset: coupled with semi-implicit, split with explicit
     double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
