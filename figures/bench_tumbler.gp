@@ -1,7 +1,8 @@
 # The tumbler-flow scene at 100 cells per diameter after 25 s (the acceptance run of make bench).
 # needs: bench_tumbler
 # Data: tumbler_flow/fields_lab.dat (x z Phi u_x u_y u_z T p inside; one block per row),
-#       tumbler_flow/history.dat (t steps angle points flowing max_speed ke mass mass_change dt).
+#       tumbler_flow/history.dat and tumbler_flow_explicit/history.dat (t steps angle points flowing
+#       max_speed ke mass mass_change dt layer_thickness): the semi-implicit and the explicit run.
 set terminal pngcairo size 1600,900 font "Sans,11" noenhanced
 set output outfile
 set multiplot layout 2,2 title "tumbler-flow (Sect. 4.2 without segregation), 100 cells per diameter, t = 25 s, lab frame"
@@ -28,11 +29,18 @@ plot f u 1:2:($9 > 0.5 && $3 > 0.05 ? log10($7) : 1/0) w p pt 5 ps 0.5 lc palett
 unset object 1
 set size noratio
 set autoscale
-set title "(d) free-surface angle against the horizontal"
+set title "(d) free-surface angle (fit of the Phi = Phi_co/2 contour) and flowing-layer thickness, both modes"
 set xlabel "t [s]"
 set ylabel "angle [deg]"
+set y2label "layer thickness [mm]"
+set y2tics
+set yrange [0:*]
+set ytics nomirror
 set grid
 set key bottom right
-plot benchdir.'/tumbler_flow/history.dat' u 1:3 w l lw 2 t "surface angle (fit of the Phi = Phi_co/2 contour)", \
+plot benchdir.'/tumbler_flow/history.dat' u 1:3 w l lw 2 lc rgb "#1f77b4" t "angle, semi-implicit", \
+     benchdir.'/tumbler_flow_explicit/history.dat' u 1:3 w l lw 1 lc rgb "#d62728" t "angle, explicit", \
+     benchdir.'/tumbler_flow/history.dat' u 1:(1e3*$11) axes x1y2 w l lw 1 dt 3 lc rgb "#1f77b4" t "layer, semi-implicit", \
+     benchdir.'/tumbler_flow_explicit/history.dat' u 1:(1e3*$11) axes x1y2 w l lw 1 dt 3 lc rgb "#d62728" t "layer, explicit", \
      atan(sqrt(2*1.9e-4*1.3e3/3))*180/pi w l dt 2 lc rgb "black" t "friction angle atan(mu)"
 unset multiplot

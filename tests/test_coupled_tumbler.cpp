@@ -65,7 +65,7 @@ BOOST_AUTO_TEST_CASE(fill_fraction_and_angle_of_repose) {
     const double R = drum.radius(), d = drum.surface_height() / R;
     const double exact = R * R * (std::acos(-d) + d * std::sqrt(1 - d * d));
     BOOST_TEST(filled * g.h[0] * g.h[2] == exact, tt::tolerance(0.01));
-    AngleOfRepose angle(1.0);
+    TimeAverage angle(1.0);
     angle.add(0.5, 90.0);  // before `from`: left out
     angle.add(1.0, 20.0);
     angle.add(2.0, NAN);   // no surface crossing: left out

@@ -128,6 +128,7 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         }
     d.surface_points = static_cast<int>(points.size());
     d.surface_angle_deg = NAN;
+    d.surface_distance = NAN;
     if (points.size() >= 2) {
         double mx = 0, mz = 0;
         for (const auto& p : points) mx += p[0], mz += p[1];
@@ -135,6 +136,7 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         double sxx = 0, sxz = 0, szz = 0;
         for (const auto& p : points) sxx += (p[0] - mx) * (p[0] - mx), sxz += (p[0] - mx) * (p[1] - mz), szz += (p[1] - mz) * (p[1] - mz);
         const double theta = 0.5 * std::atan2(2 * sxz, sxx - szz);  // principal direction of the points
+        d.surface_distance = std::fabs(-(mx - f.x_c) * std::sin(theta) + (mz - f.z_c) * std::cos(theta));
         const Vec3 gv = f.gravity_at(s.time());
         const double horizontal = std::atan2(gv[0], -gv[2]);  // direction of g rotated by +90 degrees
         double angle = theta - horizontal;
@@ -144,12 +146,14 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         d.surface_angle_deg = (f.omega < 0.0 ? -1.0 : 1.0) * angle * 180.0 / M_PI;
     }
     double mass = 0.0, flowing = 0.0;
+    const double cell_area = g.cell_volume() / (g.n[1] * g.h[1]);
     for (std::size_t c = 0; c < g.cells(); ++c) {
         if (!g.is_inside(c)) continue;
         const double speed = std::sqrt(s.u(0)[c] * s.u(0)[c] + s.u(1)[c] * s.u(1)[c] + s.u(2)[c] * s.u(2)[c]);
         mass += s.Phi()[c];
         if (speed > v_flow) flowing += s.Phi()[c];
         if (s.Phi()[c] > Phi_level) d.max_speed = std::max(d.max_speed, speed);
+        if (s.Phi()[c] > Phi_level && speed > v_flow) d.flowing_area += cell_area;
         d.kinetic_energy += 0.5 * s.Phi()[c] * speed * speed * g.cell_volume();
     }
     d.flowing_fraction = mass > 0.0 ? flowing / mass : 0.0;

@@ -6,6 +6,7 @@
 #include "core/output.hpp"
 #include "flow/flow_solver.hpp"
 
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -45,7 +46,16 @@ struct DrumState {
     double flowing_fraction;   // share of the granular mass moving faster than v_flow relative to the drum
     double max_speed;          // m/s, largest |u| relative to the drum over cells with Phi > Phi_level
     double kinetic_energy;     // sum of Phi |u|^2 / 2 times the cell volume (rho* = 1)
+    double surface_distance;   // m, distance of the fitted surface line from the axis (NaN without a fit)
+    double flowing_area;       // m^2, area of the cells with Phi > Phi_level moving faster than v_flow
+                               // relative to the drum, per unit length along y
 };
+
+/// Mean thickness of the flowing layer: its area over the chord the fitted surface cuts from a
+/// drum of radius R (NaN without a fit).
+inline double flowing_layer_thickness(const DrumState& d, double R) {
+    return d.flowing_area / (2.0 * std::sqrt(R * R - d.surface_distance * d.surface_distance));
+}
 
 /// Fits a line (total least squares) through the points where Phi crosses Phi_level between
 /// neighbouring inside cells within `radius` of the axis, and compares it with the horizontal

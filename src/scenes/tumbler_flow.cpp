@@ -35,11 +35,12 @@ struct TumblerFlow : SceneJob {
         const double Phi_level = surface_level(material, settings.phi_hat), v_flow = drum.flowing_speed();
         const double t_end = run_options.t_end;
         DataTable history({"t", "steps", "surface_angle_deg", "surface_points", "flowing_fraction", "max_speed",
-                           "kinetic_energy", "mass", "mass_change", "dt"});
+                           "kinetic_energy", "mass", "mass_change", "dt", "layer_thickness"});
         history.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level) +
-                        " contour within 0.8 R; flowing = |u| > " + format_number(v_flow) + " m/s");
+                        " contour within 0.8 R; flowing = |u| > " + format_number(v_flow) +
+                        " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
         OutputSet out;
-        AngleOfRepose angle(run_options.angle_from);
+        TimeAverage angle(run_options.angle_from), layer(run_options.angle_from);  // time averages from angle_from
         const double mass0 = solver.mass();  // before the first sample
         int snapshot = 0;
         double next_history = 0.0, next_snapshot = 0.0;
@@ -47,10 +48,12 @@ struct TumblerFlow : SceneJob {
             if (solver.time() >= next_history - 1e-12 || solver.time() >= t_end) {
                 next_history += kDrumHistoryInterval;
                 const DrumState d = drum_state(solver, Phi_level, 0.8 * drum.radius(), v_flow);
+                const double thickness = flowing_layer_thickness(d, drum.radius());
                 angle.add(solver.time(), d.surface_angle_deg);
+                layer.add(solver.time(), thickness);
                 history.row({solver.time(), static_cast<double>(solver.steps()), d.surface_angle_deg,
                              static_cast<double>(d.surface_points), d.flowing_fraction, d.max_speed, d.kinetic_energy,
-                             solver.mass(), solver.mass() / mass0 - 1.0, solver.last_dt()});
+                             solver.mass(), solver.mass() / mass0 - 1.0, solver.last_dt(), thickness});
             }
             if (run_options.vtk && (solver.time() >= next_snapshot - 1e-12 || solver.time() >= t_end)) {
                 next_snapshot += run_options.snapshot_every;
@@ -62,16 +65,19 @@ struct TumblerFlow : SceneJob {
         sample();
         advance_flow(solver, t_end, "tumbler-flow", sample);
 
-        std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change"};
+        std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change",
+                                         "layer_mean", "layer_std"};
         std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
-                                   static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0};
+                                   static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
+                                   layer.std_dev()};
         for (int b = 0; b < kStepBounds; ++b) {  // how many steps each bound of the time step set
             columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
             values.push_back(static_cast<double>(solver.counters().set_by[b]));
         }
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
-                        format_number(run_options.angle_from) + " s; mass_change relative; steps_X: steps whose dt "
+                        format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
+                        "samples; mass_change relative; steps_X: steps whose dt "
                         "the bound X set (docs/flow_solver.md Sect. 3)");
         summary.row(values);
         out.add("history.dat", history);

@@ -63,7 +63,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
                     format_number(level) + "; surface angle: fit of the Phi = " + format_number(level) +
                     " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) + " m/s");
-    AngleOfRepose angle(options.run.angle_from);
+    TimeAverage angle(options.run.angle_from);
     BoundsMonitor bounds;
     double small_change = 0, large_change = 0, surface_angle = 0;
     PatternMetrics metrics;

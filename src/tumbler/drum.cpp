@@ -50,14 +50,14 @@ std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid) {
     return fill;
 }
 
-void AngleOfRepose::add(double t, double angle_deg) {
-    if (t < from_ || !std::isfinite(angle_deg)) return;  // NaN: no surface crossing within 0.8 R
-    sum_ += angle_deg, sum2_ += angle_deg * angle_deg, ++n_;
+void TimeAverage::add(double t, double value) {
+    if (t < from_ || !std::isfinite(value)) return;  // NaN: no surface crossing within 0.8 R
+    sum_ += value, sum2_ += value * value, ++n_;
 }
 
-double AngleOfRepose::mean() const { return n_ > 0 ? sum_ / n_ : std::numeric_limits<double>::quiet_NaN(); }
+double TimeAverage::mean() const { return n_ > 0 ? sum_ / n_ : std::numeric_limits<double>::quiet_NaN(); }
 
-double AngleOfRepose::std_dev() const {
+double TimeAverage::std_dev() const {
     if (n_ < 2) return 0.0;
     const double m = mean();
     return std::sqrt(std::max(0.0, sum2_ / n_ - m * m));

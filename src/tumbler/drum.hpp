@@ -70,12 +70,12 @@ std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, con
 /// fraction of its height for the cell holding the surface; 0 outside the drum).
 std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid);
 
-/// Mean and standard deviation of the free-surface angle over the samples taken at t >= from
-/// (samples without an angle, NaN, left out).
-class AngleOfRepose {
+/// Mean and standard deviation of a drum diagnostic (the free-surface angle, the flowing layer's
+/// thickness) over the samples taken at t >= from (NaN samples, without a surface fit, left out).
+class TimeAverage {
 public:
-    explicit AngleOfRepose(double from) : from_(from) {}
-    void add(double t, double angle_deg);
+    explicit TimeAverage(double from) : from_(from) {}
+    void add(double t, double value);
     double mean() const;
     double std_dev() const;  // 0 for fewer than two samples
     long samples() const { return n_; }

@@ -1,15 +1,19 @@
 // The acceptance runs of Sect. 4.2 at full resolution (100 cells per diameter, 25 s, 2 OpenMP
 // threads, or OMP_NUM_THREADS if set: on a busy machine two threads stall each other): the flow
-// alone (tumbler-flow, verification/scenes/tumbler_flow.toml) and the whole model (tumbler,
-// verification/scenes/tumbler.toml), alternately kRuns times each, so both see the same load. Reports the median wall times, their ratio (issue 11: the coupling may cost at most a
-// fifth of the flow, ratio <= 1.2), the cost of the coupling per cell and flow step from the
-// coupled run's own timers, and then, once, the coupled drum without packing feedback
+// alone in both time-stepping modes (tumbler-flow, verification/scenes/tumbler_flow.toml with the
+// default semi-implicit step and tumbler_flow_explicit.toml) and the whole model (tumbler,
+// verification/scenes/tumbler.toml), alternately kRuns times each, so all see the same load.
+// Reports the median wall times; for both flow modes steps, angle of repose and flowing-layer
+// thickness (issue 12) and their wall-time ratio; the ratio coupled / flow (issue 11: the coupling
+// may cost at most a fifth of the flow, ratio <= 1.2), the cost of the coupling per cell and flow
+// step from the coupled run's own timers, and then, once, the coupled drum without packing feedback
 // (tumbler_no_feedback.toml) and the kinematic drum (figures/tumbler_kinematic.toml) to check:
 //   d. the pattern after 25 s against bounds stated before the first full run (below);
 //   e. the Fig. 7d contrast with packing feedback on and off (as verify_tumbler, on the real pattern).
-// Writes DIR/tumbler_flow, DIR/tumbler (the data of figures/full_fig7*_tumbler.gp),
-// DIR/tumbler_no_feedback, DIR/tumbler_kinematic, bench_tumbler_times.dat and
-// bench_tumbler_pattern.dat. Long (three quarters of an hour on an idle machine): `make bench`.
+// Writes DIR/tumbler_flow, DIR/tumbler_flow_explicit, DIR/tumbler (the data of
+// figures/full_fig7*_tumbler.gp), DIR/tumbler_no_feedback, DIR/tumbler_kinematic,
+// bench_tumbler_times.dat, bench_tumbler_modes.dat and bench_tumbler_pattern.dat. Long (an hour
+// and a half on an idle machine): `make bench`.
 //
 // Run: build/bench/bench_tumbler [--data DIR]
 #include "harness/check_table.hpp"
@@ -27,6 +31,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace granseg;
@@ -35,7 +40,8 @@ using granseg::verify::CheckTable;
 namespace {
 
 constexpr int kRuns = 3;
-constexpr const char* kFlowScene = "verification/scenes/tumbler_flow.toml";
+constexpr const char* kFlowScene = "verification/scenes/tumbler_flow.toml";  // semi-implicit (the default)
+constexpr const char* kExplicitFlowScene = "verification/scenes/tumbler_flow_explicit.toml";
 constexpr const char* kCoupledScene = "verification/scenes/tumbler.toml";
 constexpr const char* kNoFeedbackScene = "verification/scenes/tumbler_no_feedback.toml";
 constexpr const char* kKinematicScene = "figures/tumbler_kinematic.toml";
@@ -77,6 +83,29 @@ std::map<std::string, double> last_row(const std::string& path) {
     return row;
 }
 
+/// The flow alone in both modes (0 explicit, 1 semi-implicit): wall times over the runs, and from
+/// the last run's summary (the runs are deterministic) steps, angle and layer thickness; printed
+/// and written to bench_tumbler_modes.dat.
+void write_modes(const verify::ProgramOptions& options, const std::vector<std::pair<std::vector<double>, std::string>>& modes) {
+    DataTable table({"semi_implicit", "wall_median_s", "wall_min_s", "wall_max_s", "steps", "angle_mean_deg",
+                     "angle_std_deg", "layer_mean_mm", "layer_std_mm"});
+    table.comment("tumbler-flow, 100 cells per diameter, 25 s: 0 explicit, 1 semi-implicit; angle and flowing-layer "
+                  "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from");
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+        const auto& [walls, dir] = modes[m];
+        const auto s = last_row(dir + "/summary.dat");
+        table.row({static_cast<double>(m), verify::median(walls), *std::min_element(walls.begin(), walls.end()),
+                   *std::max_element(walls.begin(), walls.end()), s.at("steps"), s.at("angle_mean_deg"),
+                   s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std")});
+        std::printf("%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm\n",
+                    m == 0 ? "explicit" : "semi-implicit", verify::median(walls), s.at("steps"), s.at("angle_mean_deg"),
+                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"));
+    }
+    std::printf("wall ratio explicit / semi-implicit (medians): %.2f\n",
+                verify::median(modes[0].first) / verify::median(modes[1].first));
+    verify::write_data(options, "bench_tumbler_modes.dat", table);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,20 +113,24 @@ int main(int argc, char** argv) {
     const int threads = std::getenv("OMP_NUM_THREADS") ? omp_get_max_threads() : 2;
     omp_set_num_threads(threads);
     const std::string dir = options.data_dir;
-    std::vector<double> flow, coupled;
-    DataTable times({"run", "flow_seconds", "coupled_seconds"});
+    std::vector<double> flow, flow_explicit, coupled;
+    DataTable times({"run", "flow_seconds", "coupled_seconds", "flow_explicit_seconds"});
     for (int run = 0; run < kRuns; ++run) {
         const std::string before = verify::load_average();
         flow.push_back(run_timed(kFlowScene, dir + "/tumbler_flow"));
+        flow_explicit.push_back(run_timed(kExplicitFlowScene, dir + "/tumbler_flow_explicit"));
         coupled.push_back(run_timed(kCoupledScene, dir + "/tumbler"));
-        times.row({static_cast<double>(run), flow.back(), coupled.back()});
-        std::printf("run %d: tumbler-flow %.1f s, tumbler %.1f s wall on %d threads (load average before: %s, after: %s)\n",
-                    run, flow.back(), coupled.back(), threads, before.c_str(), verify::load_average().c_str());
+        times.row({static_cast<double>(run), flow.back(), coupled.back(), flow_explicit.back()});
+        std::printf("run %d: tumbler-flow %.1f s (explicit %.1f s), tumbler %.1f s wall on %d threads (load average before: %s, after: %s)\n",
+                    run, flow.back(), flow_explicit.back(), coupled.back(), threads, before.c_str(),
+                    verify::load_average().c_str());
         std::fflush(stdout);
     }
-    times.comment("100 cells per diameter, 25 s, " + std::to_string(threads) + " threads; medians: tumbler-flow " + verify::format(verify::median(flow)) +
-                  " s, tumbler " + verify::format(verify::median(coupled)) + " s");
+    times.comment("100 cells per diameter, 25 s, " + std::to_string(threads) + " threads; medians: tumbler-flow " +
+                  verify::format(verify::median(flow)) + " s (explicit " + verify::format(verify::median(flow_explicit)) +
+                  " s), tumbler " + verify::format(verify::median(coupled)) + " s");
     verify::write_data(options, "bench_tumbler_times.dat", times);
+    write_modes(options, {{flow_explicit, dir + "/tumbler_flow_explicit"}, {flow, dir + "/tumbler_flow"}});
     run_scene_file(kNoFeedbackScene, dir + "/tumbler_no_feedback");
     run_scene_file(kKinematicScene, dir + "/tumbler_kinematic");
 
