@@ -73,7 +73,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     ldlt_.factorize(pattern_.matrix);
     if (ldlt_.info() != Eigen::Success)
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
-    const Eigen::MatrixXd u = ldlt_.solve(rhs_);
+    const Eigen::MatrixXd u = solve_columns();
     for (std::size_t c : mesh.inside_cells)
         for (int b = 0; b < 3; ++b) {
             state.u[b][c] = u(pattern_.unknown[c], b);
@@ -81,12 +81,19 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         }
 }
 
+Eigen::MatrixXd CoupledViscosity::solve_columns() const {
+    Eigen::MatrixXd x = Eigen::MatrixXd::Zero(rhs_.rows(), rhs_.cols());
+    for (Eigen::Index b = 0; b < rhs_.cols(); ++b)
+        if (!rhs_.col(b).isZero(0.0)) x.col(b) = ldlt_.solve(rhs_.col(b));  // a zero column solves to zero exactly
+    return x;
+}
+
 void CoupledViscosity::diffuse_change(const FlowMesh& mesh, std::array<std::vector<double>, 3>& du) {
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         for (int b = 0; b < 3; ++b) rhs_(r, b) = mass_[r] * du[b][c];
     }
-    const Eigen::MatrixXd w = ldlt_.solve(rhs_);
+    const Eigen::MatrixXd w = solve_columns();
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         if (mass_[r] > 0.0)
