@@ -1,6 +1,6 @@
 // Building blocks of the flow solver (src/flow/): the HLLC flux, the hydrostatic reconstruction,
 // the batched line solver, the rotating frame, the drum geometry, and the inverse equation of
-// state of the semi-implicit step.
+// state and the dust faces of the semi-implicit step.
 #include "flow/bed.hpp"
 #include "flow/equation_of_state.hpp"
 #include "flow/flow_output.hpp"
@@ -8,6 +8,7 @@
 #include "flow/frame.hpp"
 #include "flow/hllc.hpp"
 #include "flow/line_solver.hpp"
+#include "flow/semi_implicit.hpp"
 #include "core/error.hpp"
 #include "core/scene_file.hpp"
 #include "scenes/flow_scenes.hpp"
@@ -16,8 +17,10 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <utility>
 
 using namespace granseg;
 namespace tt = boost::test_tools;
@@ -207,6 +210,40 @@ BOOST_AUTO_TEST_CASE(flow_scenes_reject_bad_values_with_one_line) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+/// U* and the donor of the face between a dust cell (lower) and a bed cell (upper) in a row of
+/// four cells along x, the bed cell moving away from the face at 0.1 m/s, the dust at u_dust.
+std::pair<double, double> dust_face(double u_dust) {
+    const Grid grid = Grid::plane_xz(4, 1, 0.0, 0.0, 0.004, 0.001);
+    const FlowMesh mesh(grid);
+    const std::size_t cells = grid.cells(), faces = grid.faces(0);
+    FlowState state;
+    state.Phi = {0.0, 1e-6, 0.6, 0.0};
+    state.u = {std::vector<double>{0.0, u_dust, 0.1, 0.0}, std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
+    CellClosures closures;
+    closures.Phi_co.assign(cells, 0.6);
+    const std::array<std::vector<double>, 3> A{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0),
+                                               std::vector<double>(cells, 0.0)};
+    AxisPressureFaces pf;
+    pf.force.assign(faces, 0.0), pf.predictor.assign(faces, 0.0), pf.coupling.assign(faces, 0.0);
+    pf.donor.assign(faces, 0.0), pf.reversed.assign(faces, 0);
+    std::vector<double> change(cells, 0.0);
+    pressure_coupling(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf, change);
+    const std::size_t f = grid.face_index(0, 2, 0, 0);
+    return {pf.predictor[f], pf.donor[f]};
+}
+
+BOOST_AUTO_TEST_CASE(dust_moves_its_own_material_but_opens_a_gap_without_flow) {
+    // Dust following the bed cell carries its own material at its own velocity...
+    const auto [follow_U, follow_donor] = dust_face(0.05);
+    BOOST_TEST(follow_U == 0.05);
+    BOOST_TEST(follow_donor == 1e-6);
+    // ...dust moving the other way leaves a gap: no face velocity, and the bed cell's material
+    // is not carried after the dust (its own velocity leads away from the face).
+    const auto [gap_U, gap_donor] = dust_face(-0.05);
+    BOOST_TEST(gap_U == 0.0);
+    BOOST_TEST(gap_donor == 1e-6);
+}
 
 BOOST_AUTO_TEST_CASE(volume_at_pressure_inverts_the_equation_of_state) {
     // Phi(p(Phi)) = Phi for both compressibility laws, on both branches and near Phi_rcp; the

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace granseg {
@@ -104,6 +105,19 @@ std::string flow_vtk(const FlowSolver& s) {
             out << (in ? v[0] : 0.0) << " " << (in ? s.u(1)[c] : 0.0) << " " << (in ? v[1] : 0.0) << "\n";
         }
     return out.str();
+}
+
+void append_flow_counts(const FlowCounters& counts, std::vector<std::string>& columns, std::vector<double>& values) {
+    for (int b = 0; b < kStepBounds; ++b) {
+        columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
+        values.push_back(static_cast<double>(counts.set_by[b]));
+    }
+    for (const auto& [name, count] : {std::pair{"pressure_solves", counts.pressure_solves}, std::pair{"newton", counts.newton},
+                                      std::pair{"krylov", counts.krylov},
+                                      std::pair{"temperature_iterations", counts.temperature_iterations}}) {
+        columns.push_back(name);
+        values.push_back(static_cast<double>(count));
+    }
 }
 
 DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, double v_flow) {

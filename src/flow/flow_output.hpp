@@ -57,6 +57,11 @@ inline double flowing_layer_thickness(const DrumState& d, double R) {
     return d.flowing_area / (2.0 * std::sqrt(R * R - d.surface_distance * d.surface_distance));
 }
 
+/// Appends the solver's counts to a summary row: steps_X, the steps whose dt the bound X set
+/// (docs/flow_solver.md Sect. 3), and the semi-implicit step's pressure_solves, newton and krylov
+/// iterations (0 in the explicit step) and the temperature solves' conjugate-gradient iterations.
+void append_flow_counts(const FlowCounters& counts, std::vector<std::string>& columns, std::vector<double>& values);
+
 /// Fits a line (total least squares) through the points where Phi crosses Phi_level between
 /// neighbouring inside cells within `radius` of the axis, and compares it with the horizontal
 /// (perpendicular to gravity at the solver's time).

@@ -94,11 +94,13 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         }
         // The mass-weighted mean; but a donor holding (almost) nothing moves its material at its
         // own velocity (upwind), so dust left behind by a moving cell is not dragged along (it
-        // would feed that cell's velocity back to it with no friction in between).
+        // would feed that cell's velocity back to it with no friction in between). Dust moving
+        // away from the face while the other cell moves away too opens a gap: no flow (its own
+        // velocity would carry the other cell's material after it).
         const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
         const std::size_t up = mean > 0.0 ? lo : hi;
         const bool dilute = is_dust(Phi[up], Phi_co[up]);
-        const double U = dilute ? u[up]
+        const double U = dilute ? (u[up] * mean > 0.0 ? u[up] : 0.0)
                                 : mean + dt * pf.force[f] / (h * Phi_f) - mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
         const bool careful = pf.reversed[f] || U == 0.0;
         const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];

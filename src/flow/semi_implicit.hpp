@@ -23,7 +23,8 @@
 //        U* = V* + dt D/(h Phi_f) - V_A,
 //    V*, V_A the normal components of u* and A at the face: the mass-weighted mean
 //    (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi), or the donor's own value when the donor holds
-//    (almost) no material (dust left behind by a moving cell is not dragged along). The face
+//    (almost) no material (dust left behind by a moving cell is not dragged along; 0 where that
+//    value points away from the face: a gap opens and carries nothing). The face
 //    moves as its cells do after the viscous step, except that the cells' shared forces are
 //    replaced by the face's own compact D (Rhie-Chow: no checkerboard). The donor Phi_d is the
 //    cell U* leaves, or the smaller of the two when U* = 0 or when the pressure reversed the flow

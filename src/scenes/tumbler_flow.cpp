@@ -70,15 +70,12 @@ struct TumblerFlow : SceneJob {
         std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
                                    static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
                                    layer.std_dev()};
-        for (int b = 0; b < kStepBounds; ++b) {  // how many steps each bound of the time step set
-            columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
-            values.push_back(static_cast<double>(solver.counters().set_by[b]));
-        }
+        append_flow_counts(solver.counters(), columns, values);
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
                         format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
-                        "samples; mass_change relative; steps_X: steps whose dt "
-                        "the bound X set (docs/flow_solver.md Sect. 3)");
+                        "samples; mass_change relative; steps_X: steps whose dt the bound X set (docs/flow_solver.md "
+                        "Sect. 3); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts");
         summary.row(values);
         out.add("history.dat", history);
         out.add("summary.dat", summary);

@@ -114,25 +114,28 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     PackingContrastOptions contrast_options;
     contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
     const PackingContrast contrast = packing_contrast(tumbler, surface_angle, contrast_options);
-    DataTable summary({"t_end", "steps", "substeps", "segregation_steps", "angle_mean_deg", "angle_std_deg", "angle_samples",
-                       "mass_small_change", "mass_large_change", "segregation_index", "ring", "periphery", "core",
-                       "initial_mixture", "packing_feedback", "packing_contrast", "packing_spread", "contrast_bins",
-                       "largest_bulk_clip", "largest_segregation_clip", "seconds_flow", "seconds_bulk",
-                       "seconds_segregation", "seconds_feedback", "inside_cells"});
+    std::vector<std::string> columns{"t_end", "steps", "substeps", "segregation_steps", "angle_mean_deg", "angle_std_deg",
+                                     "angle_samples", "mass_small_change", "mass_large_change", "segregation_index", "ring",
+                                     "periphery", "core", "initial_mixture", "packing_feedback", "packing_contrast",
+                                     "packing_spread", "contrast_bins", "largest_bulk_clip", "largest_segregation_clip",
+                                     "seconds_flow", "seconds_bulk", "seconds_segregation", "seconds_feedback", "inside_cells"};
+    std::vector<double> values{flow.time(), static_cast<double>(flow.steps()), static_cast<double>(tumbler.segregation_substeps()),
+                               static_cast<double>(tumbler.segregation_steps()), angle.mean(), angle.std_dev(),
+                               static_cast<double>(angle.samples()), small_change, large_change, metrics.index, metrics.ring,
+                               metrics.periphery, metrics.core, tumbler.initial_mixture(),
+                               tumbler.setup().packing_feedback ? 1.0 : 0.0, contrast.contrast, contrast.spread,
+                               static_cast<double>(contrast.bins), tumbler.largest_bulk_clip(), tumbler.largest_correction(),
+                               tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
+                               static_cast<double>(inside_cells(grid))};
+    append_flow_counts(flow.counters(), columns, values);
+    DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
                     " s; pattern metrics at t_end (regions r_core " + format_number(options.regions.r_core) + ", r_ring " +
                     format_number(options.regions.r_ring) + ", r_periphery " + format_number(options.regions.r_periphery) +
                     " m); packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
                     " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
-                    "transport, segregation sub-steps, closures from phi_hat)");
-    summary.row({flow.time(), static_cast<double>(flow.steps()), static_cast<double>(tumbler.segregation_substeps()),
-                 static_cast<double>(tumbler.segregation_steps()), angle.mean(), angle.std_dev(),
-                 static_cast<double>(angle.samples()), small_change, large_change, metrics.index, metrics.ring,
-                 metrics.periphery, metrics.core, tumbler.initial_mixture(),
-                 tumbler.setup().packing_feedback ? 1.0 : 0.0, contrast.contrast, contrast.spread,
-                 static_cast<double>(contrast.bins), tumbler.largest_bulk_clip(), tumbler.largest_correction(),
-                 tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
-                 static_cast<double>(inside_cells(grid))});
+                    "transport, segregation sub-steps, closures from phi_hat); flow counts: flow_output.hpp append_flow_counts");
+    summary.row(values);
     out.add("history.dat", history);
     out.add("summary.dat", summary);
     out.add("fields_lab.dat", coupled_field_table(tumbler));
