@@ -80,12 +80,12 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     // Newton stops at `accuracy` times the largest mass change of the explicit fluxes, and at
     // round-off when they change nothing (a bed at rest stays at rest to round-off).
     const double tolerance = accuracy * target.lpNorm<Eigen::Infinity>() + kRoundOff;
-    for (;; ++stats.newton) {
-        // F = Phi(p + dp) - Phi(p) - r + K dp, and the slopes dPhi/dp at p + dp.
-        // Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp: where
-        // dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
-        // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
-        // Newton step can reduce (the step rounds away in dp + step).
+    // F = Phi(p + dp) - Phi(p) - r + K dp and the slopes dPhi/dp at p + dp; returns the residual's
+    // resolution. Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp:
+    // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
+    // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
+    // Newton step can reduce (the step rounds away in dp + step).
+    auto evaluate = [&] {
         F_ = laplacian_ * x_ - target;
         double resolution = 0.0;
         for (std::size_t c : mesh.inside_cells) {
@@ -95,6 +95,17 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             slope_[r] = v.slope;
             resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
         }
+        return resolution;
+    };
+    double resolution = evaluate();
+    // The warm start, unless it is further from the solution than no increment at all (F = -r
+    // there): after a sudden change of the state the last step's dp can be a poor guess (in the
+    // rolling drum it once started at |F| = 10 against |r| = 8e-3; 7 % fewer Newton steps).
+    if (F_.lpNorm<Eigen::Infinity>() > target.lpNorm<Eigen::Infinity>() && x_.any()) {
+        x_.setZero();
+        resolution = evaluate();
+    }
+    for (;; ++stats.newton) {
         stats.residual = F_.lpNorm<Eigen::Infinity>();
         // At least one Newton step (a lagged pressure would not damp the acoustic waves), unless
         // the residual is already at round-off (a bed at rest then stays exactly where it is).
@@ -111,6 +122,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         const Eigen::VectorXd step = cg_.solve(-F_);
         stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
         x_ += step;
+        resolution = evaluate();
     }
     for (std::size_t c : mesh.inside_cells) dp[c] = x_[pattern_.unknown[c]];
     return stats;

@@ -12,7 +12,8 @@
 // preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
 // cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
 // grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
-// faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start).
+// faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start)
+// unless dp = 0 is closer to the solution.
 #pragma once
 
 #include "closures/material.hpp"
