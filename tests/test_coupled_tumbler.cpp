@@ -1,9 +1,10 @@
 // The coupled drum's pieces on small grids: the bulk step written like the mass balance (a uniform
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
-// repose, and a few coupled steps with S = 0.
+// repose, a few coupled steps with S = 0, and a drum of one phase only.
 #include "flow/bed.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
+#include "tumbler/coupled_run.hpp"
 #include "tumbler/coupled_tumbler.hpp"
 #include "tumbler/drum.hpp"
 
@@ -90,6 +91,25 @@ BOOST_AUTO_TEST_CASE(no_segregation_keeps_phi_hat_half_and_both_phases) {
     BOOST_TEST(total_amount(g, tumbler.phi()) == small0, tt::tolerance(1e-14));
     BOOST_TEST(tumbler.flow().mass() == all0, tt::tolerance(1e-14));
     BOOST_TEST(tumbler.segregation_substeps() >= 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_drum_of_small_particles_only_runs_with_an_empty_phase) {
+    // The run's invariants measure both phases against all material: a phase that starts empty
+    // (phi_hat = 1 everywhere) has no amount of its own to divide by (it once stopped the run
+    // with a change of NaN at t = 0).
+    CoupledTumblerSetup setup;
+    setup.drum.cells_per_diameter = 26;
+    setup.phi_hat0 = [](double, double) { return 1.0; };
+    CoupledTumbler tumbler(setup);
+    CoupledRunOptions options;
+    options.run.t_end = 0.1, options.run.angle_from = 0.0, options.run.vtk = false, options.frames = 0;
+    options.regions = coupled_regions(setup.drum, surface_level(setup.material, 1.0));
+    OutputSet files;
+    BOOST_CHECK_NO_THROW(files = run_coupled_tumbler(tumbler, options));
+    long not_all = 0;
+    const Grid& g = tumbler.grid();
+    for (std::size_t c = 0; c < g.cells(); ++c) not_all += g.is_inside(c) && tumbler.phi()[c] != tumbler.flow().Phi()[c];
+    BOOST_TEST(not_all == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

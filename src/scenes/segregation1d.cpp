@@ -34,7 +34,7 @@ struct Segregation1d : SceneJob {
         Progress progress("segregation1d", t_end);
         const auto check = [&] {
             check_segregation_invariants("segregation1d", bounds, solver.largest_correction(), mass0,
-                                         total_amount(column.grid, phi), kMassTolerance, bounded, Phi_max);
+                                         total_amount(column.grid, phi), mass0, kMassTolerance, bounded, Phi_max);
         };
         long steps = 0;
         solver.advance(column.fields, t_end, phi, [&](double t, double) {

@@ -37,12 +37,13 @@ struct BoundsMonitor {
 /// <= DBL_EPSILON/2 of a value below 1.25 Phi; 8 DBL_EPSILON of Phi_max covers that with room.
 constexpr double kBoundRoundOff = 8 * std::numeric_limits<double>::epsilon();
 
-/// Throws InvariantError (one line, naming `context`) for a non-finite value, for a relative
-/// change of the amount above `mass_tolerance`, and, if `check_bounds`, if the scheme left
+/// Throws InvariantError (one line, naming `context`) for a non-finite value, for a change of the
+/// amount, |mass_now - mass_start| / mass_scale (absolute if mass_scale is 0), above
+/// `mass_tolerance`, and, if `check_bounds`, if the scheme left
 /// [0, Phi] by more than kBoundRoundOff * Phi_max before its round-off guard clipped it
 /// (`correction`, SegregationSolver::largest_correction).
 void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction,
-                                  double mass_start, double mass_now, double mass_tolerance, bool check_bounds,
-                                  double Phi_max);
+                                  double mass_start, double mass_now, double mass_scale, double mass_tolerance,
+                                  bool check_bounds, double Phi_max);
 
 }  // namespace granseg

@@ -4,7 +4,8 @@
 // kDrumHistoryInterval the segregation is brought up to date and a history row is recorded; the
 // invariants are checked there (InvariantError, exit 3):
 //   - the amount of each phase, sum of phi and sum of Phi - phi over the drum, stays within
-//     kTumblerMassTolerance relative of its start (both move only by face fluxes that telescope);
+//     kTumblerMassTolerance of the whole amount at the start, sum of Phi (both move only by face
+//     fluxes that telescope; measured against the whole, since a phase may start empty);
 //   - 0 <= phi <= Phi: the bulk step (CoupledTumbler) and the segregation sub-step
 //     (SegregationSolver) may clip only round-off, kBoundRoundOff Phi, checked at every step.
 //

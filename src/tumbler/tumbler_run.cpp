@@ -74,7 +74,8 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
             record(target);
             result.after_segregation.observe(grid, tumbler.phi(), Phi);  // finite values; the clip keeps the bounds
             check_segregation_invariants("tumbler-kinematic", result.after_segregation, tumbler.largest_correction(),
-                                         result.mass_start, total_amount(grid, tumbler.phi()), kTumblerMassTolerance,
+                                         result.mass_start, total_amount(grid, tumbler.phi()), result.mass_start,
+                                         kTumblerMassTolerance,
                                          true, Phi_max);
             ++next_sample;
         }
