@@ -246,11 +246,14 @@ BOOST_AUTO_TEST_CASE(dust_moves_its_own_material_but_opens_a_gap_without_flow) {
 }
 
 BOOST_AUTO_TEST_CASE(volume_at_pressure_inverts_the_equation_of_state) {
-    // Phi(p(Phi)) = Phi for both compressibility laws, on both branches and near Phi_rcp; the
-    // slope is 1/c^2; Phi(p) is concave (slopes decrease) and continued by its tangent below 0.
-    for (const CompressibilityLaw law : {CompressibilityLaw::power, CompressibilityLaw::lun_savage}) {
+    // Phi(p(Phi)) = Phi for both compressibility laws, on both branches and near Phi_rcp, from
+    // either start of the iteration; the slope is 1/c^2; Phi(p) is concave (slopes decrease) and continued by its tangent below 0.
+    // The power law with beta = 1 (closed form), Lun-Savage and beta = 3 (iterated).
+    for (const auto& [law, beta] : {std::pair{CompressibilityLaw::power, 1.0}, std::pair{CompressibilityLaw::lun_savage, 1.0},
+                                    std::pair{CompressibilityLaw::power, 3.0}}) {
         Material m = Material::glass_substitute();
         m.g_law = law;
+        m.beta = beta;
         const double rcp = m.packing.Phi_rcp(0.5), co = m.packing.Phi_co(0.5), T = 1e-6;
         double last_slope = INFINITY;
         for (const double Phi : {0.2 * co, 0.6 * co, co - 1e-3, co + 1e-3, 0.5 * (co + rcp), rcp - 1e-4}) {
@@ -259,6 +262,9 @@ BOOST_AUTO_TEST_CASE(volume_at_pressure_inverts_the_equation_of_state) {
             BOOST_TEST(w.Phi == Phi, tt::tolerance(1e-12));
             BOOST_TEST(w.slope == 1.0 / v.c2, tt::tolerance(1e-6));
             BOOST_TEST(w.slope < last_slope);
+            // Started below or above the root, the iteration finds the same Phi.
+            for (const double guess : {0.5 * Phi, 0.5 * (Phi + rcp)})
+                BOOST_TEST(volume_at_pressure(m, v.p, T, rcp, co, guess).Phi == Phi, tt::tolerance(1e-12));
             last_slope = w.slope;
         }
         const VolumeAtPressure below = volume_at_pressure(m, -2e-7, T, rcp, co);

@@ -42,12 +42,13 @@ inline double compressibility_factor(const Material& m, double Phi, double Phi_r
     return b == 1.0 ? 1.0 / gap : std::pow(gap, -b);
 }
 
-/// dg/dPhi at fixed Phi_rcp (for the sound speed).
-inline double compressibility_factor_slope(const Material& m, double Phi, double Phi_rcp) {
+/// dg/dPhi at fixed Phi_rcp (for the sound speed) from g = compressibility_factor(m, Phi, Phi_rcp):
+/// b gap^(-b-1) / Phi_rcp = b g / (Phi_rcp gap), without a second power.
+inline double compressibility_factor_slope(const Material& m, double Phi, double Phi_rcp, double g) {
     const double gap = 1.0 - Phi / Phi_rcp;
     if (!(gap > 0.0)) return std::numeric_limits<double>::infinity();
     const double b = compressibility_exponent(m, Phi_rcp);
-    return b == 1.0 ? 1.0 / (Phi_rcp * gap * gap) : b / Phi_rcp * std::pow(gap, -b - 1.0);
+    return b == 1.0 ? 1.0 / (Phi_rcp * gap * gap) : b * g / (Phi_rcp * gap);
 }
 
 /// Kinetic pressure p_k = Phi g T (eq. 16).
@@ -95,7 +96,7 @@ inline ClosureValues evaluate_closures_at(const Material& m, double Phi, double 
     v.dissipation = m.eps0 * v.g * sqrtT * (Phi * T + excess);
 
     // c^2 = d/dPhi [g (Phi T + excess)] at fixed T: g' (Phi T + excess) + g (T + s T0).
-    const double dg = compressibility_factor_slope(m, Phi, Phi_rcp);
+    const double dg = compressibility_factor_slope(m, Phi, Phi_rcp, v.g);
     v.c2 = dg * (Phi * T + excess) + v.g * (T + (excess > 0.0 ? m.T0 : 0.0));
     return v;
 }

@@ -72,7 +72,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     x_.resize(rows), slope_.resize(rows), F_.resize(rows);
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
-        base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]).Phi;
+        base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], state.Phi[c]).Phi;
         target[r] = change[c];
         x_[r] = dp[c];
     }
@@ -90,7 +90,8 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         double resolution = 0.0;
         for (std::size_t c : mesh.inside_cells) {
             const long r = pattern_.unknown[c];
-            const VolumeAtPressure v = volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c]);
+            const VolumeAtPressure v =
+                volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], base[r]);
             F_[r] += v.Phi - base[r];
             slope_[r] = v.slope;
             resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
