@@ -47,14 +47,14 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
                               const FlowFaces& faces, bool first) {
     const std::size_t nx = mesh.grid.n[0];
     const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
-    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
+    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data(), *rcp = closures.Phi_rcp.data();
     const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
     const double* S[3] = {faces[0].speed.data(), faces[1].speed.data(), faces[2].speed.data()};
     const double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
     double inv_h[3];
     for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
-    double rate = 0.0, outflow_rate = 0.0;
-#pragma omp parallel for reduction(max : rate, outflow_rate) schedule(static) if (mesh.parallel)
+    double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
+#pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (mesh.parallel)
     for (std::size_t r = 0; r < mesh.rows; ++r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
@@ -62,18 +62,20 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
             const std::size_t c = nx * r + i;
             if (!mesh.inside[c]) continue;
             const double own = is_dust(Phi[c], Phi_co[c]) ? 0.0 : 1.0;  // dust: its outflow is capped instead
-            double cfl = 0.0, out = 0.0;
+            double cfl = 0.0, out = 0.0, div = 0.0;
             for (int a = 0; a < 3; ++a) {
                 if (inv_h[a] == 0.0) continue;
                 const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
                 cfl += (std::max({own * std::fabs(u[a][c]), S[a][fl], S[a][fu]}) + sound * cs[c]) * inv_h[a];
                 out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
+                div += (M[a][fu] - M[a][fl]) * inv_h[a];
             }
             rate = std::max(rate, cfl);
             if (out > 0.0 && own > 0.0) outflow_rate = std::max(outflow_rate, 2.0 * out / Phi[c]);
+            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (rcp[c] - Phi[c]));
         }
     }
-    return {rate, outflow_rate, 0.0};
+    return {rate, outflow_rate, compaction_rate};
 }
 
 const char* step_bound_name(StepBound bound) {
