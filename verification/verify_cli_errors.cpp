@@ -168,6 +168,7 @@ std::vector<Case> cli_cases(const fs::path& out) {
                   coupled + "[drum]\ncells_per_diameter = 16\n"),
         bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),
         bad_scene("tumbler, Phi_min = 1", "[segregation] Phi_min:", coupled + "[segregation]\nPhi_min = 1\n"),
+        bad_scene("tumbler, no gravity (no bed to start from)", "[drum] gravity:", coupled + "[drum]\ngravity = 0\n"),
         bad_scene("segregation1d, phi = Phi + 0.01", "[initial] phi:",
                   column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"),
         bad_scene("segregation1d, cfl = 1.5", "[time] cfl:",

@@ -96,7 +96,9 @@ DrumSpec read_drum(const SceneFile& scene) {
     d.rps = scene.number(s, "rps", Range::closed(-100, 100), d.rps);
     d.axial_cells = static_cast<int>(scene.integer(s, "axial_cells", 1, 1000, 1));
     d.axial_length = scene.number(s, "axial_length", Range::above(0), d.axial_cells * d.diameter / d.cells_per_diameter);
-    d.gravity = scene.number(s, "gravity", Range::at_least(0), d.gravity);
+    // The drum starts from the bed at rest in the lithostatic balance under g: without gravity
+    // there is no bed (Phi(p = 0) = 0, an empty drum).
+    d.gravity = scene.number(s, "gravity", Range::above(0), d.gravity);
     return d;
 }
 
