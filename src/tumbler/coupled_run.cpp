@@ -62,7 +62,8 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
                        "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
                        "substeps", "dt"});
-    history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 relative to the whole amount at t = 0, sum of Phi); "
+    history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
+                    "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
                     format_number(level) + "; surface angle: fit of the Phi = " + format_number(level) +
                     " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) + " m/s");
