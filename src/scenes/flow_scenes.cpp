@@ -123,6 +123,7 @@ Range packing_range(const FlowJob& job) {
 std::unique_ptr<SceneJob> prepare_bed_at_rest(const SceneFile& scene) {
     auto job = common(scene, "bed-at-rest", read_box(scene, true, false));
     job->frame.gravity = scene.number("run", "gravity", Range::at_least(0), 9.81);
+    if (job->frame.gravity > 0.0) require_yield_pressure(scene, job->material);
     const std::vector<std::string> xz = {"x", "z"};
     fill(scene, "bed", "Phi", scene.expression("bed", "Phi", xz), job->grid, job->Phi, packing_range(*job));
     fill(scene, "bed", "T", scene.expression("bed", "T", xz, "1e-12"), job->grid, job->T, Range::at_least(0));
@@ -147,6 +148,7 @@ std::unique_ptr<SceneJob> prepare_inclined_plane(const SceneFile& scene) {
     auto job = common(scene, "inclined-plane", read_box(scene, false, true));
     const std::string s = "plane";
     job->frame.gravity = scene.number("run", "gravity", Range::above(0), 9.81);
+    require_yield_pressure(scene, job->material);
     job->frame.tilt = scene.number(s, "angle_deg", Range::open(-90, 90)) * M_PI / 180.0;
     const std::vector<std::string> z = {"z"};
     const Expression Phi = scene.expression(s, "Phi", z), T = scene.expression(s, "T", z, "1e-12"),

@@ -43,4 +43,12 @@ Material read_material(const SceneFile& scene) {
     return m;
 }
 
+void require_yield_pressure(const SceneFile& scene, const Material& m) {
+    if (m.T0 <= 0.0)
+        scene.fail("material", "T0",
+                   "0 leaves a bed under gravity only the kinetic pressure g Phi T (eq. 15), and at rest T falls to "
+                   "T_floor: the bed compacts to Phi_rcp (a run stops there)",
+                   "T0 > 0 in scenes with gravity, e.g. 1e-3; the default is 1");
+}
+
 }  // namespace granseg

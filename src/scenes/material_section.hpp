@@ -12,4 +12,8 @@ namespace granseg {
 /// packing_table (path, default built-in), packing_degree. Bad values: scene.fail (InputError).
 Material read_material(const SceneFile& scene);
 
+/// Fails on [material] T0 = 0 in a scene whose bed rests under gravity: without the yield pressure
+/// (eq. 19) only the kinetic pressure g Phi T holds it, and T -> T_floor compacts it to Phi_rcp.
+void require_yield_pressure(const SceneFile& scene, const Material& m);
+
 }  // namespace granseg

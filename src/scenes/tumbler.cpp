@@ -30,6 +30,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.material = read_material(scene);
     s.flow = read_flow_settings(scene, false);
     s.drum = read_drum(scene);
+    require_yield_pressure(scene, s.material);
     if (s.drum.cells_per_diameter < min_tumbler_cells())
         scene.fail("drum", "cells_per_diameter",
                    std::to_string(s.drum.cells_per_diameter) + " cells leave the flowing layer (about " +

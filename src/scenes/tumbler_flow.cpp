@@ -118,6 +118,7 @@ std::unique_ptr<SceneJob> prepare_tumbler_flow(const SceneFile& scene) {
     auto job = std::make_unique<TumblerFlow>(read_material(scene));
     job->settings = read_flow_settings(scene);
     job->drum = read_drum(scene);
+    require_yield_pressure(scene, job->material);
     job->run_options = read_drum_run(scene);
     return job;
 }
