@@ -74,6 +74,10 @@ BOOST_AUTO_TEST_CASE(fill_fraction_and_angle_of_repose) {
     BOOST_TEST(angle.samples() == 2);
     BOOST_TEST(angle.mean() == 25.0);
     BOOST_TEST(angle.std_dev() == 5.0, tt::tolerance(1e-12));
+    TimeAverage none(1.0);  // a diagnostic never defined (e.g. the layer of a drum at rest)
+    none.add(2.0, NAN);
+    BOOST_TEST(std::isnan(none.mean()));
+    BOOST_TEST(std::isnan(none.std_dev()));
 }
 
 BOOST_AUTO_TEST_CASE(no_segregation_keeps_phi_hat_half_and_both_phases) {

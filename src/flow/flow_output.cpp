@@ -171,6 +171,7 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         d.kinetic_energy += 0.5 * s.Phi()[c] * speed * speed * g.cell_volume();
     }
     d.flowing_fraction = mass > 0.0 ? flowing / mass : 0.0;
+    if (!(v_flow > 0.0)) d.flowing_fraction = d.flowing_area = NAN;  // a drum at rest: no wall speed to measure by
     return d;
 }
 

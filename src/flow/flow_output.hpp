@@ -49,6 +49,7 @@ struct DrumState {
     double surface_distance;   // m, distance of the fitted surface line from the axis (NaN without a fit)
     double flowing_area;       // m^2, area of the cells with Phi > Phi_level moving faster than v_flow
                                // relative to the drum, per unit length along y
+                               // (flowing_fraction and flowing_area: NaN when v_flow = 0)
 };
 
 /// Mean thickness of the flowing layer: its area over the chord the fitted surface cuts from a

@@ -58,7 +58,8 @@ void TimeAverage::add(double t, double value) {
 double TimeAverage::mean() const { return n_ > 0 ? sum_ / n_ : std::numeric_limits<double>::quiet_NaN(); }
 
 double TimeAverage::std_dev() const {
-    if (n_ < 2) return 0.0;
+    if (n_ == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (n_ == 1) return 0.0;
     const double m = mean();
     return std::sqrt(std::max(0.0, sum2_ / n_ - m * m));
 }

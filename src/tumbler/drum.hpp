@@ -34,7 +34,8 @@ struct DrumSpec {
     Grid grid() const;
     /// Height of the flat initial surface above the drum's centre.
     double surface_height() const { return fill_height - radius(); }
-    /// Speed relative to the drum above which material counts as flowing: 5 % of the wall speed.
+    /// Speed relative to the drum above which material counts as flowing: 5 % of the wall speed
+    /// (0 for a drum at rest, whose flowing share and layer drum_state then reports as NaN).
     double flowing_speed() const { return 0.05 * std::fabs(2.0 * M_PI * rps) * radius(); }
 };
 
@@ -77,7 +78,7 @@ public:
     explicit TimeAverage(double from) : from_(from) {}
     void add(double t, double value);
     double mean() const;
-    double std_dev() const;  // 0 for fewer than two samples
+    double std_dev() const;  // 0 for one sample, NaN for none (as mean())
     long samples() const { return n_; }
 
 private:
