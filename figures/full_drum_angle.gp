@@ -1,19 +1,20 @@
 # The drum's dynamic angle of repose against the cell size h, both time-stepping modes (make figures-full).
 # needs: bench_drum_angle
 # Data: bench_drum_angle.dat (cells semi_implicit dt_max h_mm steps wall_s angle_mean_deg angle_std_deg
-#       ke_min_over_mean ke_max_over_mean friction_deg), one row per run of bench_drum_angle;
+#       ke_min_over_mean ke_max_over_mean friction_deg layer_mm steps_halved), one row per run of bench_drum_angle;
 #       bench_drum_angle_gap.dat (h_mm explicit_deg semi_implicit_deg gap_deg), the modes' gap at equal h.
-set terminal pngcairo size 1800,500 font "Sans,11" noenhanced
+set terminal pngcairo size 1500,1000 font "Sans,11" noenhanced
 set output outfile
-set multiplot layout 1,3 title "tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps), 25 s, statistics over t >= 10 s"
+set multiplot layout 2,2 title "tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps), 25 s, statistics over t >= 10 s"
 set grid
 f = benchdir.'/bench_drum_angle.dat'
 set xlabel "h = D / cells per diameter [mm]"
 set xrange [0:3.5]
-# rows: explicit; semi-implicit at dt_max = 1 ms; semi-implicit at dt_max = 0.1 ms (1/0 drops the others)
+# rows: explicit; semi-implicit at dt_max = 1 ms; semi-implicit at dt_max = 0.1 ms (1/0 drops the others;
+# the semi-implicit runs at other dt_max are panel (d)'s)
 explicit(c) = $2 == 0 ? c : 1/0
-semi(c) = $2 == 1 && $3 > 5e-4 ? c : 1/0
-semi_small(c) = $2 == 1 && $3 < 5e-4 ? c : 1/0
+semi(c) = $2 == 1 && $3 == 1e-3 ? c : 1/0
+semi_small(c) = $2 == 1 && $3 == 1e-4 ? c : 1/0
 # the semi-implicit points are shifted by 0.05 mm so that their error bars do not hide the explicit ones
 dx = 0.05
 stats f u 11 nooutput
@@ -59,4 +60,31 @@ set ytics (0.5, 1, 2, 3, 5, 10)
 set key top left
 plot g u 1:4 w p pt 7 ps 1.5 lc rgb "black" t "measured gap", \
      exp(lc) * x**p w l lw 1.5 lc rgb "black" dt 2 t sprintf("C h^p, p = %.2f (log-log least squares)", p)
+set title "(d) semi-implicit: angle (left) and flowing-layer thickness (right) against dt_max"
+set xlabel "dt_max [ms]"
+set ylabel "angle [deg]"
+set y2label "layer thickness [mm]"
+set logscale x
+unset logscale y
+set xrange [0.2:5]
+set xtics (0.25, 0.5, 1, 2, 4)
+set yrange [18:25]
+set ytics auto nomirror
+set y2range [0:20]
+set y2tics auto
+set key bottom left
+# the runs are not in dt_max order in the file, and a line through 1/0-filtered rows breaks at every
+# dropped row: copy each resolution's semi-implicit runs to a table first (dt_max [ms], angle, std, layer)
+set table $d50
+plot f u (1e3 * $3):7:8:12 w table if ($2 == 1 && $1 == 50)
+set table $d100
+plot f u (1e3 * $3):7:8:12 w table if ($2 == 1 && $1 == 100)
+unset table
+plot friction w l lw 2 dt 2 lc rgb "black" t "friction angle", \
+     $d50 u 1:2:3 w yerrorbars pt 5 ps 1.3 lc rgb "#d62728" t "angle, 50 cells", \
+     $d50 u 1:2 smooth unique w l lc rgb "#d62728" notitle, \
+     $d100 u 1:2:3 w yerrorbars pt 7 ps 1.3 lc rgb "#9467bd" t "angle, 100 cells", \
+     $d100 u 1:2 smooth unique w l lc rgb "#9467bd" notitle, \
+     $d50 u 1:4 axes x1y2 smooth unique w lp pt 4 ps 1.3 dt 2 lc rgb "#d62728" t "layer, 50 cells", \
+     $d100 u 1:4 axes x1y2 smooth unique w lp pt 6 ps 1.3 dt 2 lc rgb "#9467bd" t "layer, 100 cells"
 unset multiplot

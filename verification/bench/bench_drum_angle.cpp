@@ -2,7 +2,8 @@
 // the tumbler-flow drum of verification/scenes/tumbler_flow.toml (25 s, angle averaged from 10 s)
 // at kRuns' cells per diameter, modes and dt_max, one after another on OMP_NUM_THREADS threads
 // (default 1). Per run: steps, wall time, the angle's mean and standard deviation over
-// t >= angle_from, the kinetic energy (relative to the drum) over t >= angle_from as min/mean and
+// t >= angle_from, the flowing layer's mean thickness, the steps repeated with half the dt, the
+// kinetic energy (relative to the drum) over t >= angle_from as min/mean and
 // max/mean (a rolling drum keeps both near 1; a slumping one falls by orders of magnitude between
 // avalanches), and the friction angle atan(mu) of the scene's material (Material::shear_friction,
 // eq. 45 balance; docs/flow_solver.md Sect. 1). At the end, from each mode's runs at dt_max 1 ms:
@@ -16,9 +17,11 @@
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //
-// Run: build/bench/bench_drum_angle [--data DIR]   (long: 41 minutes on one thread of the shared
-// machine on 2 December 2026, 18 of them the 100-cell explicit run)
+// Run: build/bench/bench_drum_angle [--data DIR]   (long: about 70 minutes on one thread. The runs
+// at dt_max 1 and 0.1 ms took 41 minutes on 2 December 2026, 18 of them the 100-cell explicit run;
+// the dt_max study about 12 more at 50 cells and 18 at 100 cells, two runs at a time, 3 December)
 #include "closures/packing.hpp"
+#include "flow/time_step.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "scenes/material_section.hpp"
@@ -49,12 +52,15 @@ struct Run {
     const char* mode;   // [flow] time_stepping
     double dt_max;      // s, [flow] dt_max (1e-3 is the default; binds only the semi-implicit step)
 };
-// Explicit up to 100 cells (the resolution of the target); semi-implicit up to 64 at the
-// default dt_max, and at 32 and 64 cells with a tenth of it, to separate the time step's share.
+// Explicit up to 100 cells (the resolution of the target); semi-implicit up to 100 at the
+// default dt_max, at 32 cells with a tenth of it, and at 50 and 100 cells from 0.25 to 4 ms: what a
+// longer (cheaper) step costs in angle and layer thickness.
 constexpr Run kRuns[] = {
-    {32, "explicit", 1e-3},      {50, "explicit", 1e-3},      {64, "explicit", 1e-3},
-    {100, "explicit", 1e-3},     {32, "semi-implicit", 1e-3}, {50, "semi-implicit", 1e-3},
-    {64, "semi-implicit", 1e-3}, {100, "semi-implicit", 1e-3}, {32, "semi-implicit", 1e-4},
+    {32, "explicit", 1e-3},       {50, "explicit", 1e-3},       {64, "explicit", 1e-3},
+    {100, "explicit", 1e-3},      {32, "semi-implicit", 1e-3},  {50, "semi-implicit", 1e-3},
+    {64, "semi-implicit", 1e-3},  {100, "semi-implicit", 1e-3}, {32, "semi-implicit", 1e-4},
+    {50, "semi-implicit", 2.5e-4}, {50, "semi-implicit", 5e-4}, {50, "semi-implicit", 2e-3},
+    {50, "semi-implicit", 4e-3},  {100, "semi-implicit", 2e-3}, {100, "semi-implicit", 4e-3},
 };
 
 /// The scene `base` with the run's resolution, mode and dt_max, without VTK output, as TOML text.
@@ -97,7 +103,7 @@ int main(int argc, char** argv) {
     const double diameter = base["drum"]["diameter"].value<double>().value();
 
     DataTable table({"cells", "semi_implicit", "dt_max", "h_mm", "steps", "wall_s", "angle_mean_deg", "angle_std_deg",
-                     "ke_min_over_mean", "ke_max_over_mean", "friction_deg"});
+                     "ke_min_over_mean", "ke_max_over_mean", "friction_deg", "layer_mm", "steps_halved"});
     table.comment("tumbler-flow drum of " + std::string(kScene) + ", 25 s; angle and kinetic energy over t >= " +
                   verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s); load average at start " +
                   verify::load_average());
@@ -115,16 +121,18 @@ int main(int argc, char** argv) {
 
         const Material m = read_material(SceneFile::load(dir + ".toml"));
         friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
-        const auto s = verify::read_rows(dir + "/summary.dat")[0];  // t_end steps angle_mean angle_std samples mass_change
+        // t_end steps angle_mean angle_std samples mass_change layer_mean layer_std steps_X (6 bounds) ...
+        const auto s = verify::read_rows(dir + "/summary.dat")[0];
         const auto history = history_range(verify::read_rows(dir + "/history.dat"), angle_from);
         const bool is_explicit = std::string(r.mode) == "explicit";
         const double h_mm = 1e3 * diameter / r.cells;
         table.row({double(r.cells), is_explicit ? 0.0 : 1.0, r.dt_max, h_mm, s[1], wall, s[2], s[3], history.ke_min,
-                   history.ke_max, friction});
+                   history.ke_max, friction, 1e3 * s[6], s[8 + static_cast<int>(StepBound::halved)]});
         verify::write_data(options, "bench_drum_angle.dat", table);  // after every run: a long study keeps what it has
         checks.note(tag + ": " + verify::format(s[1]) + " steps, " + verify::format(wall) + " s wall; angle " +
                     verify::format(s[2]) + " +- " + verify::format(s[3]) + " deg (friction angle " + verify::format(friction) +
-                    "); kinetic energy min/mean " + verify::format(history.ke_min) + ", max/mean " + verify::format(history.ke_max));
+                    "); layer " + verify::format(1e3 * s[6]) + " mm; kinetic energy min/mean " + verify::format(history.ke_min) +
+                    ", max/mean " + verify::format(history.ke_max));
         // Mass is conserved to round-off: at most one unit of round-off per step (as verify_flow_tumbler).
         checks.at_most(tag + ": relative mass change", history.mass_change, s[1] * DBL_EPSILON);
         if (r.dt_max == 1e-3) h[is_explicit ? 0 : 1].push_back(h_mm), angle[is_explicit ? 0 : 1].push_back(s[2]);
