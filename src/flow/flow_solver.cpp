@@ -147,7 +147,8 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
     const std::array<std::vector<double>, 3> m0 = state_.m, u0 = state_.u;
     const std::vector<double> E0 = state_.E;
     for (;;) {
-        // 1. Predictor: pressure and weight at t^n, Coriolis, sources; the force part A; viscosity.
+        // 1. Predictor: pressure and weight at t^n, Coriolis, sources; the force part A (before
+        // viscosity: the face predictor replaces it by the face's own force); viscosity.
         for (int a = 0; a < 3; ++a)
             if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
         explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, Phi_before_, state_);
@@ -157,7 +158,6 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         timers_.convection += seconds_since(t0);
         t0 = clock::now();
         viscosity(dt);
-        diffuse_change(dt, force_part_);  // the share of u* the forces made (walls at rest)
         timers_.viscosity += seconds_since(t0);
         t0 = clock::now();
         // 2., 3. Face predictor, pressure increments, corrected faces; the donors of faces the

@@ -150,7 +150,7 @@ private:
     PressureFaces pressure_;
     PressureSolver pressure_solver_;
     std::vector<double> dp_, change_;  // pressure increments of the last step, explicit mass change
-    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces, diffused
+    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces, before viscosity
     std::array<std::vector<double>, 3> u_star_;      // the predictor's velocity after viscosity
     std::array<std::vector<double>, 3> change_u_;    // velocity change of the rest of the step
     FlowState increment_;  // split viscosity's work state for diffuse_change: Phi at t^n and du
