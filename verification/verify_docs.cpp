@@ -137,6 +137,7 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
             n.numeric_lines += c.numeric_lines;
             n.numbers += c.numbers;
             n.mutants_agreeing += c.mutants_agreeing;
+            if (c.mutants_agreeing > 0) t.note("  " + where + ": with one digit changed, this line still agrees: " + c.first_mutant_agreeing);
         }
         after_command = false;  // an output block belongs to the command block right before it
     }
@@ -219,7 +220,7 @@ void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_d
         std::string error;
         const std::string now = figure_fingerprint(repo.root, name, data_dir, error);
         if (!error.empty()) t.note("  " + name + ": " + error);
-        t.count("docs/figures/" + name + ".png: drawn from today's data (else make docs-figures)",
+        t.count("docs/figures/" + name + ".png: drawn from the current data (else make docs-figures)",
                 !now.empty() && now == fingerprint ? 0 : 1, 0);
         t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
         if (now.empty()) continue;
@@ -235,7 +236,7 @@ void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_d
 void check_detectors(CheckTable& t) {
     const std::string history = "measured on 2 December 2026\nin May 2025\nmain af0974d\na freshly booted Intel Xeon\n"
                                 "on 2026-12-03\nload average 0.4\n";
-    const std::string clean = "Gray & Thornton (2005)\nN = 1600, 12800 cells\n#1f77b4 colour\nΦ_rcp = 0.634\n";
+    const std::string clean = "Gray & Thornton (2005)\nN = 1600, 12800 cells\n#1f77b4 colour\np_k = 1.046400526e-05\n";
     t.count("detector self-check: history sample lines flagged (of 6)", static_cast<long>(history_findings(history).size()), 6);
     t.count("detector self-check: clean sample lines flagged", static_cast<long>(history_findings(clean).size()), 0);
     const std::string outside = std::string("see ../") + "sha" + "red/paper/NOTES" + ".md\n(model" + ".md 3.4)\n";

@@ -16,9 +16,11 @@ namespace granseg::verify::docs {
 namespace {
 
 // Relative slack on top of half a unit of the last digit: the printed value and the page's
-// number are both decimal renderings, so only the conversion of each to double (1e-16
-// relative) separates two equal numbers; 1e-12 is far below any printed precision.
-constexpr double kConversionSlack = 1e-12;
+// number are both decimal renderings, so only the conversion of each to double (1.1e-16
+// relative, half an ulp) separates two equal numbers at the boundary of the interval; 1e-15 covers
+// it and stays below the last digit of any number a double prints (at most 17 significant digits
+// of which a page quotes at most 15).
+constexpr double kConversionSlack = 1e-15;
 
 const std::string kGeneratedOpen = "<!-- generated: ";
 const std::string kGeneratedClose = "<!-- end generated -->";
@@ -142,7 +144,7 @@ Comparison compare(const std::vector<std::string>& expected, const std::vector<s
         if (!page.numbers.empty()) {
             ++c.numeric_lines;
             c.numbers += static_cast<long>(page.numbers.size());
-            c.mutants_agreeing += agrees(out[k], mutated(page));
+            if (agrees(out[k], mutated(page)) && c.mutants_agreeing++ == 0) c.first_mutant_agreeing = line;
         }
         next = k + 1;
     }

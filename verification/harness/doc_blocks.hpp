@@ -50,6 +50,7 @@ Tokens mutated(Tokens t);
 struct Comparison {
     long missing = 0, mutants_agreeing = 0, numeric_lines = 0, numbers = 0;
     std::string first_missing, nearest;  // the first expected line not found, the printed line most like it
+    std::string first_mutant_agreeing;   // the first expected line whose mutant still agrees
 };
 Comparison compare(const std::vector<std::string>& expected, const std::vector<std::string>& printed);
 
