@@ -39,6 +39,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -60,6 +61,8 @@ const std::vector<std::string> kPendingPages = {"docs/flow_solver.md", "docs/sec
 const std::vector<std::string> kPendingSources = {"src/tumbler/coupled_tumbler.hpp"};
 // Seconds one command block may take before it counts as failed.
 constexpr int kBlockTimeout = 300;
+// A command block slower than this is named in the table (make verify's time budget).
+constexpr double kSlowBlock = 2.0;
 // A reference figure is a small image for reading on a fresh clone, not a print master.
 constexpr long kLargestFigureBytes = 200 * 1024;
 
@@ -114,7 +117,10 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
         const std::string where = page + ":" + std::to_string(b.first_line);
         if (b.language == "sh") {
             ++n.commands;
+            const auto start = std::chrono::steady_clock::now();
             last = run_block(b, scratch, kBlockTimeout);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (seconds > kSlowBlock) t.note(where + ": command block took " + granseg::verify::format(seconds) + " s");
             t.count(where + ": command block exit status", last.status, expected_status(b));
             if (last.status != expected_status(b))
                 for (std::size_t i = last.lines.size() > 3 ? last.lines.size() - 3 : 0; i < last.lines.size(); ++i)

@@ -60,7 +60,7 @@ struct Run {
     std::vector<std::string> lines;
 };
 
-/// Runs the block as `sh -e` in `scratch`, at most `timeout_seconds` long.
+/// Runs the block as `sh -e` in `scratch` on one OpenMP thread, at most `timeout_seconds` long.
 Run run_block(const Block& b, const std::filesystem::path& scratch, int timeout_seconds);
 
 /// A generated block of a page: the table file it copies and its text (without the markers).
