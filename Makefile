@@ -6,7 +6,9 @@
 # Both first check the Debian packages below: as root they are installed, otherwise the one
 # apt-get line to run is printed and make stops with exit status 2.
 #
-# Other targets: all (build only), figures, bench, figures-full, sanitize, clean.
+# Other targets: all (build only), figures, bench, figures-full, sanitize, clean, and for the
+# pages: docs-figures (redraw the reference figures of docs/figures/), docs-refresh (copy fresh
+# generated tables into docs/generated/ and the pages); docs/checked_pages.md explains both.
 # Everything generated goes to $(BUILD) (default build/), which git ignores.
 
 SHELL := /bin/bash
@@ -58,7 +60,7 @@ FULL_GP      := $(sort $(wildcard figures/full*.gp))
 FULL_PNG     := $(FULL_GP:figures/%.gp=$(BUILD)/figures/%.png)
 
 .PHONY: FORCE all verify test figures bench figures-full sanitize clean deps \
-        run-verification run-bench verify-summary test-run
+        run-verification run-bench verify-summary test-run docs-figures docs-refresh
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
@@ -167,6 +169,10 @@ $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 
 run-verification: $(VERIFY_RC)
 
+# verify_docs reads what the other programs wrote (their result logs, the data the reference
+# figures were drawn from), so it runs after all of them.
+$(BUILD)/results/verify_docs.rc: $(filter-out $(BUILD)/results/verify_docs.rc,$(VERIFY_RC))
+
 # ---- figures -----------------------------------------------------------------------------------
 # Every figures/*.gp names the programs whose data it plots in a line '# needs: NAME ...'.
 # A PNG is re-rendered only when its script or one of those programs' results is newer.
@@ -197,6 +203,30 @@ $(BUILD)/figures/%.png: figures/%.gp | $(BUILD)/.deps-ok
 	fi
 
 figures: $(FIG_PNG)
+
+# ---- the pages' reference figures and generated tables (docs/checked_pages.md) ----------------
+# The figures the pages show on a fresh clone, committed under docs/figures/: drawn by the same
+# scripts as build/figures/ (with small=1: 800 pixels wide) from the data of the verification
+# programs, which run first if their results are stale; then verify_docs records a fingerprint
+# of the data each was drawn from, by which make verify tells a stale image.
+DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig4b_regions \
+               fig5_region_c_example fig6a_profiles fig6b_closeup fig7b_kinematic \
+               fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic
+
+docs-figures: deps
+	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)
+	@$(MAKE) --no-print-directory $(PAR) -O $(DOC_FIGURES:%=$(BUILD)/figures/%.png)
+	@for f in $(DOC_FIGURES); do \
+	  gnuplot -e "datadir='$(BUILD)/data'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
+	    && mv docs/figures/$$f.png.tmp docs/figures/$$f.png && echo "docs-figures: docs/figures/$$f.png" \
+	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
+	done
+	@$(BUILD)/verification/verify_docs --fingerprint $(DOC_FIGURES)
+
+# Generated tables: a program writes NAME.md into $(BUILD)/data or $(BUILD)/bench-data; this
+# copies every fresh one into docs/generated/NAME.md and into the pages' blocks that show it.
+docs-refresh: $(BUILD)/verification/verify_docs
+	@$(BUILD)/verification/verify_docs --refresh
 
 # ---- the two commands --------------------------------------------------------------------------
 # Keeps going past a program that fails to build, run or render: the summary counts it as failed.
