@@ -6,7 +6,8 @@
 # Both first check the Debian packages below: as root they are installed, otherwise the one
 # apt-get line to run is printed and make stops with exit status 2.
 #
-# Other targets: all (build only), figures, fig7, bench, figures-full, sanitize, clean.
+# Other targets: all (build only), figures, fig7, bench (BENCH=NAME to run one), figures-full,
+# sanitize, clean.
 # Everything generated goes to $(BUILD) (default build/), which git ignores.
 
 SHELL := /bin/bash
@@ -264,18 +265,28 @@ test-run:
 	exit $$rc
 
 # ---- benchmarks and long studies (not part of verify) ------------------------------------------
+# `make bench` runs every benchmark; `make bench BENCH="bench_a bench_b"` only those, and BENCH_ARGS
+# go to each one's command line (for one benchmark: e.g. BENCH=bench_fig7_convergence
+# BENCH_ARGS="--cells 25,35,50 --explicit-cells 25,35 --t-end 4 --average-from 2", a test in minutes).
+BENCH ?= $(notdir $(BENCH_BIN))
+BENCH_ARGS ?=
+BENCH_RC := $(BENCH:%=$(BUILD)/bench-results/%.rc)
+# The figures of the benchmarks run: the bench*.gp whose '# needs:' line names one of them.
+BENCH_RUN_PNG = $(foreach gp,$(BENCH_GP),$(if $(filter $(BENCH),$(shell sed -n 's/^# needs://p' $(gp))),$(gp:figures/%.gp=$(BUILD)/figures/%.png)))
+
 $(BUILD)/bench-results/%.rc: $(BUILD)/bench/% $(CLI)
 	@mkdir -p $(@D) $(BUILD)/bench-data
-	@$< --data $(BUILD)/bench-data 2>&1 | tee $(BUILD)/bench-results/$*.log; echo $${PIPESTATUS[0]} > $@
+	@$< --data $(BUILD)/bench-data $(BENCH_ARGS) 2>&1 | tee $(BUILD)/bench-results/$*.log; echo $${PIPESTATUS[0]} > $@
 
-run-bench: $(BENCH_BIN:$(BUILD)/bench/%=$(BUILD)/bench-results/%.rc)
+run-bench: $(BENCH_RC)
 
 # Benchmarks run one after another: timings taken while another benchmark runs are worthless.
 bench: deps
-	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH_BIN)
-	@rm -f $(BUILD)/bench-results/*.rc
+	@$(if $(filter-out $(notdir $(BENCH_BIN)),$(BENCH)),echo "bench: BENCH: no benchmark $(filter-out $(notdir $(BENCH_BIN)),$(BENCH)) (allowed: $(notdir $(BENCH_BIN)))"; exit 2,true)
+	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH:%=$(BUILD)/bench/%)
+	@rm -f $(BENCH_RC)
 	@$(MAKE) --no-print-directory -j1 run-bench
-	@$(MAKE) --no-print-directory $(PAR) $(BENCH_PNG)
+	@$(MAKE) --no-print-directory $(PAR) $(BENCH_RUN_PNG)
 
 # One job at a time: the full figures may first run the Fig. 7 drum (make fig7) and bench_drum_angle,
 # whose timings are worthless if they run side by side; rendering the PNGs takes seconds.
