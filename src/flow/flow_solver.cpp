@@ -65,7 +65,7 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         for (auto* f : {&F.mass, &F.energy, &F.mom_below, &F.p, &F.speed, &potential_.face[a]}) f->assign(faces, 0.0);
         for (int b = 0; b < 3; ++b) F.mom[b].assign(faces, 0.0);
         AxisPressureFaces& P = pressure_[a];
-        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.donor})
+        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.donor, &P.flux})
             f->assign(faces, 0.0);
         P.reversed.assign(faces, 0);
     }
@@ -166,10 +166,9 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         PressureSolveStats stats;
         bool within = false;
         for (int donor_passes = 1;; ++donor_passes) {
-            mesh_.for_each_inside([&](std::size_t c) { change_[c] = 0.0; });
             for (int a = 0; a < 3; ++a)
-                if (mesh_.active[a])
-                    pressure_coupling(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a], change_);
+                if (mesh_.active[a]) pressure_coupling(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
+            explicit_mass_change(mesh_, dt, pressure_, change_);
             const auto tp = clock::now();
             stats = pressure_solver_.solve(mesh_, material_, state_, closures_, pressure_, change_, kPressureAccuracy, dp_);
             timers_.pressure += seconds_since(tp);

@@ -61,6 +61,7 @@ struct AxisPressureFaces {
     std::vector<double> predictor;         // U* for the current dt
     std::vector<double> coupling;          // K
     std::vector<double> donor;             // Phi_d
+    std::vector<double> flux;              // the explicit flux M_x = Phi_d U*
     std::vector<unsigned char> reversed;   // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
 };
 
@@ -79,11 +80,15 @@ void pressure_faces(const FlowMesh& mesh, int axis, double gravity, const FlowSt
 void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
                      const AxisPressureFaces& pf, AxisFaces& faces);
 
-/// Part 2 for `axis`: U*, donor and K of every face from the predicted state (u*) and the force
-/// part A of the predictor; adds r_c = -dt sum_faces (M_x[upper] - M_x[lower])/h to `change`.
+/// Part 2 for `axis`: U*, donor, K and the explicit flux M_x = Phi_d U* of every face from the
+/// predicted state (u*) and the force part A of the predictor.
 void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
                        const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
-                       AxisPressureFaces& pf, std::vector<double>& change);
+                       AxisPressureFaces& pf);
+
+/// Part 2, per inside cell: the mass change of the explicit fluxes,
+/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h, subtracted axis by axis (flow/face_balance.hpp).
+void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change);
 
 /// Marks the faces whose mass flux leaves a cell holding clearly less than the donor it was
 /// computed with (the pressure reversed the flow there); returns how many it marked.
