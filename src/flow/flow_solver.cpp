@@ -45,18 +45,21 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
     const std::size_t cells = g.cells();
     for (auto* f : {&state_.Phi, &state_.E, &state_.T, &Phi_before_, &closures_.p, &closures_.c, &closures_.eta,
                     &closures_.lambda, &closures_.epsPhi, &closures_.Phi_rcp, &closures_.Phi_co, &potential_.cell,
-                    &work_, &heat_, &dp_, &change_})
+                    &E_start_, &mass_change_, &dp_, &dust_scale_, &Phi_after_, &line_rhs_, &heat_})
         f->assign(cells, 0.0);
     for (int b = 0; b < 3; ++b) {
         state_.m[b].assign(cells, 0.0);
         state_.u[b].assign(cells, 0.0);
+        m_start_[b].assign(cells, 0.0);
+        u_start_[b].assign(cells, 0.0);
         force_part_[b].assign(cells, 0.0);
         u_star_[b].assign(cells, 0.0);
-        change_u_[b].assign(cells, 0.0);
+        velocity_change_[b].assign(cells, 0.0);
         increment_.u[b].assign(cells, 0.0);
         increment_.m[b].assign(cells, 0.0);
         loads_[b].load.assign(cells, 0.0);
         loads_[b].carry.assign(cells, 0.0);
+        loads_[b].downhill.assign(cells, 0.0);
     }
     for (auto& f : grad_) f.assign(cells, 0.0);
     for (int a = 0; a < 3; ++a) {
@@ -117,7 +120,7 @@ StepSize FlowSolver::explicit_step(double t_end) {
     for (int a = 0; a < 3; ++a) {
         if (!mesh_.active[a]) continue;
         face_potential(mesh_, frame_, t_, a, potential_.cell, potential_.face[a]);
-        unsupported_loads(mesh_, settings_, frame_, t_, a, state_, closures_, potential_, loads_[a], work_);
+        unsupported_loads(mesh_, settings_, frame_, t_, a, state_, closures_, potential_, loads_[a]);
         hllc_face_fluxes(mesh_, a, state_, closures_, potential_, loads_[a], faces_[a]);
     }
     effective_pressure(mesh_, faces_, closures_);
@@ -138,14 +141,13 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
     for (int a = 0; a < 3; ++a) {
         if (!mesh_.active[a]) continue;
         face_potential(mesh_, frame_, t_, a, potential_.cell, potential_.face[a]);
-        unsupported_loads(mesh_, settings_, frame_, t_, a, state_, closures_, potential_, loads_[a], work_);
+        unsupported_loads(mesh_, settings_, frame_, t_, a, state_, closures_, potential_, loads_[a]);
         pressure_faces(mesh_, a, frame_.gravity, state_, closures_, potential_, loads_[a], pressure_[a], faces_[a]);
     }
     effective_pressure(mesh_, faces_, closures_);
     auto [dt, bound] = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
     if (steps_ > 0 && kStepGrowth * dt_ < dt) dt = kStepGrowth * dt_, bound = StepBound::growth;
-    const std::array<std::vector<double>, 3> m0 = state_.m, u0 = state_.u;
-    const std::vector<double> E0 = state_.E;
+    m_start_ = state_.m, u_start_ = state_.u, E_start_ = state_.E;
     for (;;) {
         // 1. Predictor: pressure and weight at t^n, Coriolis, sources; the force part A (before
         // viscosity: the face predictor replaces it by the face's own force); viscosity.
@@ -153,7 +155,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
             if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
         explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, Phi_before_, state_);
         mesh_.for_each_inside([&](std::size_t c) {
-            for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u0[b][c];
+            for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u_start_[b][c];
         });
         timers_.convection += seconds_since(t0);
         t0 = clock::now();
@@ -168,21 +170,21 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         for (int donor_passes = 1;; ++donor_passes) {
             for (int a = 0; a < 3; ++a)
                 if (mesh_.active[a]) pressure_coupling(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
-            explicit_mass_change(mesh_, dt, pressure_, change_);
+            explicit_mass_change(mesh_, dt, pressure_, mass_change_);
             const auto tp = clock::now();
-            stats = pressure_solver_.solve(mesh_, material_, state_, closures_, pressure_, change_, kPressureAccuracy, dp_);
+            stats = pressure_solver_.solve(mesh_, material_, state_, closures_, pressure_, mass_change_, kPressureAccuracy, dp_);
             timers_.pressure += seconds_since(tp);
             ++counters_.pressure_solves, counters_.newton += stats.newton, counters_.krylov += stats.krylov;
             if (!stats.converged) break;
             for (int a = 0; a < 3; ++a)
                 if (mesh_.active[a])
                     corrected_face_velocities(mesh_, a, dt, state_, closures_, pressure_[a], dp_, faces_[a]);
-            cap_dust_outflow(mesh_, dt, state_, closures_, work_, faces_);
-            volume_fraction_after(mesh_, dt, state_.Phi, faces_, work_);
+            cap_dust_outflow(mesh_, dt, state_, closures_, dust_scale_, faces_);
+            volume_fraction_after(mesh_, dt, state_.Phi, faces_, Phi_after_);
             long reversed = 0;
             for (int a = 0; a < 3; ++a)
                 if (mesh_.active[a]) {
-                    semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, work_, faces_[a]);
+                    semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, Phi_after_, faces_[a]);
                     reversed += mark_reversed_faces(mesh_, a, state_, faces_[a], pressure_[a]);
                 }
             if (reversed > 0 && donor_passes < kDonorPasses) continue;
@@ -192,7 +194,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         if (within) break;
         ++counters_.repeated;
         dt *= 0.5, bound = StepBound::halved;
-        state_.Phi = Phi_before_, state_.m = m0, state_.E = E0;
+        state_.Phi = Phi_before_, state_.m = m_start_, state_.E = E_start_;
         mesh_.for_each_inside([&](std::size_t c) { dp_[c] = 0.0; });
         if (!(dt >= settings_.dt_min))
             throw InvariantError("flow: the semi-implicit step fell below dt_min = " + format_number(settings_.dt_min) +
@@ -216,7 +218,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
 
 void FlowSolver::viscosity(double dt) {
     if (viscosity_solve(settings_) == ViscositySolve::split) {
-        implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, work_, state_);
+        implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, line_rhs_, state_);
         return;
     }
     if (!coupled_) coupled_.emplace(mesh_);
@@ -227,7 +229,7 @@ void FlowSolver::diffuse_change(double dt, std::array<std::vector<double>, 3>& d
     if (viscosity_solve(settings_) == ViscositySolve::coupled) return coupled_->diffuse_change(mesh_, du);
     for (int b = 0; b < 3; ++b) increment_.u[b] = du[b];
     increment_.Phi = Phi_before_;
-    implicit_viscosity(mesh_, settings_, WallVelocities{}, dt, closures_.eta, lines_, work_, increment_);
+    implicit_viscosity(mesh_, settings_, WallVelocities{}, dt, closures_.eta, lines_, line_rhs_, increment_);
     mesh_.for_each_inside([&](std::size_t c) {
         if (Phi_before_[c] > settings_.Phi_vacuum)
             for (int b = 0; b < 3; ++b) du[b][c] = increment_.u[b][c];
@@ -237,14 +239,14 @@ void FlowSolver::diffuse_change(double dt, std::array<std::vector<double>, 3>& d
 void FlowSolver::viscous_increment(double dt) {
     const double Phi_vac = settings_.Phi_vacuum;
     mesh_.for_each_inside([&](std::size_t c) {
-        for (int b = 0; b < 3; ++b) change_u_[b][c] = state_.u[b][c] - u_star_[b][c];
+        for (int b = 0; b < 3; ++b) velocity_change_[b][c] = state_.u[b][c] - u_star_[b][c];
     });
-    diffuse_change(dt, change_u_);
+    diffuse_change(dt, velocity_change_);
     // A cell empty at t^n (its row was the identity) or at the end keeps the update's velocity.
     mesh_.for_each_inside([&](std::size_t c) {
         if (!(Phi_before_[c] > Phi_vac && state_.Phi[c] > Phi_vac)) return;
         for (int b = 0; b < 3; ++b) {
-            state_.u[b][c] = u_star_[b][c] + change_u_[b][c];
+            state_.u[b][c] = u_star_[b][c] + velocity_change_[b][c];
             state_.m[b][c] = state_.Phi[c] * state_.u[b][c];
         }
     });

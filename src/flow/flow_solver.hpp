@@ -149,17 +149,25 @@ private:
     FlowFaces faces_;
     PressureFaces pressure_;
     PressureSolver pressure_solver_;
-    std::vector<double> dp_, change_;  // pressure increments of the last step, explicit mass change
-    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces, before viscosity
-    std::array<std::vector<double>, 3> u_star_;      // the predictor's velocity after viscosity
-    std::array<std::vector<double>, 3> change_u_;    // velocity change of the rest of the step
-    FlowState increment_;  // split viscosity's work state for diffuse_change: Phi at t^n and du
+    // Per cell, each with one meaning (the table in the header comment says which stage writes
+    // and reads it):
+    std::array<std::vector<double>, 3> m_start_, u_start_;  // Phi u and u at t^n, for a repeat
+    std::vector<double> E_start_;                           // Phi T at t^n, for a repeat
+    std::array<std::vector<double>, 3> force_part_;  // A: velocity change of the predictor's forces, before viscosity
+    std::array<std::vector<double>, 3> u_star_;      // u*: the predictor's velocity after viscosity
+    std::vector<double> mass_change_;  // r_c: mass change of the explicit face fluxes (pressure equation)
+    std::vector<double> dp_;           // pressure increments of the last solve (its warm start next time)
+    std::vector<double> dust_scale_;   // factor on a dust cell's outgoing mass fluxes (1 elsewhere)
+    std::vector<double> Phi_after_;    // Phi at the end of the step (shares of the increment force)
+    std::array<std::vector<double>, 3> velocity_change_;  // u - u* after transport, then diffused
+    FlowState increment_;            // split viscosity's state for diffuse_change: Phi at t^n and du
+    std::vector<double> line_rhs_;   // right-hand side of the split viscosity's line solves (swapped with u)
+    std::vector<double> heat_;       // viscous heating H of the temperature step
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
     TemperatureSolver temperature_;
     std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
-    std::vector<double> work_, heat_;  // one value per cell, work space of the kernels
     FlowTimers timers_;
     FlowCounters counters_;
 };

@@ -36,6 +36,7 @@ struct Potential {
 struct AxisLoads {
     std::vector<double> load;   // weight per area a cell's downhill face carries beyond p + Phi |d_psi|
     std::vector<double> carry;  // pressure an unsupported cell passes on at its uphill face
+    std::vector<double> downhill;  // pressure at the downhill face, what rests on the next cell of the sweep
 };
 
 struct AxisFaces {

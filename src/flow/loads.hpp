@@ -28,10 +28,8 @@ void cell_potential(const FlowMesh& mesh, const Frame& frame, double t, std::vec
 void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int axis, const std::vector<double>& psi,
                     std::vector<double>& psi_face);
 
-/// `load` and `carry` of every cell along `axis` from Phi, p, Phi_co and the potentials; `scratch`
-/// is work space of one value per cell.
+/// `load`, `carry` and `downhill` of every cell along `axis` from Phi, p, Phi_co and the potentials.
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int axis,
-                       const FlowState& state, const CellClosures& closures, const Potential& psi, AxisLoads& loads,
-                       std::vector<double>& scratch);
+                       const FlowState& state, const CellClosures& closures, const Potential& psi, AxisLoads& loads);
 
 }  // namespace granseg
