@@ -80,8 +80,7 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
 }
 
 void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
-                     double t, double dt, const FlowFaces& faces, const std::vector<double>& Phi_before,
-                     FlowState& state) {
+                     double t, double dt, const FlowFaces& faces, FlowState& state) {
     const Vec3 g = frame.gravity_at(t);
     Vec3 g_source{};
     for (int a = 0; a < 3; ++a) g_source[a] = mesh.active[a] && !mesh.grid.periodic[a] ? 0.0 : g[a];
@@ -99,15 +98,15 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
     double *Phi = state.Phi.data(), *E = state.E.data(), *T = state.T.data();
     double* m[3] = {state.m[0].data(), state.m[1].data(), state.m[2].data()};
     double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
-    const double *before = Phi_before.data(), *X = mesh.position[0].data(), *Y = mesh.position[1].data(),
-                 *Z = mesh.position[2].data();
+    const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
     mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
         const double dPhi = face_balance(M, inv_h, i, ar), dE = face_balance(Ef, inv_h, i, ar);
         double dm[3];
         for (int b = 0; b < 3; ++b) dm[b] = face_balance(mom_upper[b], mom_lower[b], inv_h, i, ar);
-        Phi[c] = before[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
+        const double Phi_start = Phi[c];
+        Phi[c] = Phi_start - dt * dPhi;  // the coupling identity (flow_solver.hpp)
         E[c] -= dt * dE;
-        for (int b = 0; b < 3; ++b) m[b][c] += dt * (before[c] * g_source[b] - dm[b]);
+        for (int b = 0; b < 3; ++b) m[b][c] += dt * (Phi_start * g_source[b] - dm[b]);
         if (source) {
             double rates[5];
             source(t, X[c], Y[c], Z[c], rates);
@@ -123,6 +122,13 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
         u[2][c] = sa * ux + ca * uz;
         T[c] = empty ? T_floor : E[c] * inv;
     });
+}
+
+void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
+                      FlowState& state) {
+    Frame still;  // no gravity and no rotation: the update of the fluxes alone
+    still.gravity = 0.0;
+    explicit_update(mesh, settings, still, FlowSource{}, 0.0, dt, faces, state);
 }
 
 }  // namespace granseg

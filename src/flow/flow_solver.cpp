@@ -126,7 +126,7 @@ StepSize FlowSolver::explicit_step(double t_end) {
     effective_pressure(mesh_, faces_, closures_);
     const StepRates rates = explicit_step_rates(mesh_, state_, closures_, faces_);
     const StepSize size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
-    explicit_update(mesh_, settings_, frame_, source_, t_, size.dt, faces_, Phi_before_, state_);
+    explicit_update(mesh_, settings_, frame_, source_, t_, size.dt, faces_, state_);
     timers_.convection += seconds_since(t0);
     t0 = clock::now();
     viscosity(size.dt);
@@ -153,7 +153,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
         // viscosity: the face predictor replaces it by the face's own force); viscosity.
         for (int a = 0; a < 3; ++a)
             if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
-        explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, Phi_before_, state_);
+        explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, state_);
         mesh_.for_each_inside([&](std::size_t c) {
             for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u_start_[b][c];
         });
@@ -206,9 +206,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
     // 3. Transport and the corrections of the increments (the predictor already carries gravity,
     // Coriolis and the sources): Phi_new = Phi - dt div M exactly.
     for (int b = 0; b < 3; ++b) u_star_[b] = state_.u[b];
-    Frame none;
-    none.gravity = 0.0;
-    explicit_update(mesh_, settings_, none, FlowSource{}, t_, dt, faces_, state_.Phi, state_);
+    transport_update(mesh_, settings_, dt, faces_, state_);
     timers_.convection += seconds_since(t0);
     t0 = clock::now();
     viscous_increment(dt);
