@@ -53,7 +53,8 @@ inline __attribute__((always_inline)) double sum_over_axes(const AxisWeights& w,
 /// face fluxes (the normal momentum flux differs as seen from below and above a face).
 inline __attribute__((always_inline)) double face_balance(const AxisFields& upper, const AxisFields& lower,
                                                           const AxisWeights& w, int i, const AxisRow* rows) {
-    return sum_over_axes(w, i, rows, [&](int a, std::size_t fl, std::size_t fu) { return upper[a][fu] - lower[a][fl]; });
+    return sum_over_axes(w, i, rows,
+                         [&](int a, std::size_t fl, std::size_t fu) { return upper[a][fu] - lower[a][fl]; });
 }
 
 /// sum_axis (F[upper face] - F[lower face]) w_axis; with w = 1/h the divergence of F.

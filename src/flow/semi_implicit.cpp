@@ -119,7 +119,8 @@ void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& 
     const AxisFields flux = axis_fields(pf, &AxisPressureFaces::flux);
     const AxisWeights rate = axis_weights(mesh, dt);
     double* r = change.data();
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { r[c] = subtract_by_axis(0.0, flux, rate, i, ar); });
+    mesh.for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* ar) { r[c] = subtract_by_axis(0.0, flux, rate, i, ar); });
 }
 
 long mark_reversed_faces(const FlowMesh& mesh, int a, const FlowState& state, const AxisFaces& faces,
@@ -175,7 +176,8 @@ void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<do
     const AxisWeights rate = axis_weights(mesh, dt);
     const double* before = Phi.data();
     double* after = Phi_after.data();
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { after[c] = subtract_by_axis(before[c], M, rate, i, ar); });
+    mesh.for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* ar) { after[c] = subtract_by_axis(before[c], M, rate, i, ar); });
 }
 
 void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const AxisPressureFaces& pf,

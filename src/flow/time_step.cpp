@@ -46,7 +46,8 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
     const AxisWeights inv_h = axis_weights(mesh);
     const double* Phi = state.Phi.data();
     auto wave = [&](std::size_t, int i, const AxisRow* ar) {
-        return sum_over_axes(inv_h, i, ar, [&](int a, std::size_t fl, std::size_t fu) { return std::max(S[a][fl], S[a][fu]); });
+        return sum_over_axes(inv_h, i, ar,
+                             [&](int a, std::size_t fl, std::size_t fu) { return std::max(S[a][fl], S[a][fu]); });
     };
     auto outflow = [&](std::size_t c, double out) { return Phi[c] > 0.0 ? out / Phi[c] : INFINITY; };
     return largest_rates(mesh, state, closures, faces, wave, outflow);
