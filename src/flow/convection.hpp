@@ -3,6 +3,13 @@
 // walls are mirror states), and the conservative update of (Phi, Phi u, Phi T) from the fluxes
 // with the body forces the potential does not carry (Coriolis, gravity along inactive or
 // periodic axes) and optional source terms. docs/flow_solver.md Sect. 3.
+//
+//   solves      the convective part of eqs. (8), (9), (14) over one step (forward Euler, unsplit)
+//   inputs      FlowMesh; the state and closures at t^n, psi and the loads of an axis (fluxes);
+//               the face fluxes, Frame, sources, t, dt (update)
+//   outputs     AxisFaces of an axis; the state after the update (Phi, Phi u, Phi T, u, T)
+//   invariants  mass, Phi T and tangential momentum fluxes are exactly 0 on walls; the update of
+//               Phi is the coupling identity Phi_new = Phi - dt div M (flow/face_balance.hpp)
 #pragma once
 
 #include "flow/flow_mesh.hpp"

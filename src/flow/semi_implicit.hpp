@@ -5,6 +5,14 @@
 // Flow", 1980, Sect. 6.8) on cells that keep the hydrostatic reconstruction of the explicit
 // scheme.
 //
+//   solves      the face kernels of the semi-implicit step (predictor, face predictor, corrected
+//               faces and fluxes; the pressure equation itself is flow/pressure_solver.hpp)
+//   inputs      FlowMesh, the state and closures (at t^n, or u* after the predictor), psi, the
+//               loads, the force part A, dt, the pressure increments dp
+//   outputs     AxisPressureFaces (p', D, U*, donor, K, M_x); AxisFaces; r_c; Phi after the step
+//   invariants  M = 0 on walls; D = 0 on every face of the discrete lithostatic balance (a bed
+//               at rest stays at rest); a dust cell loses at most kDustOutflow of its Phi a step
+//
 // Per face between the cells lo and hi of one axis (cell size h, Phi_f = (Phi_lo + Phi_hi)/2):
 //   reconstructed pressures p'_lo, p'_hi of the two cells at the face (flow/hllc.hpp, with the
 //     loads of flow/loads.hpp) and the face force D = p'_lo - p'_hi: in the discrete lithostatic
