@@ -125,7 +125,8 @@ void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const 
 void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
                       std::vector<double>& scale, FlowFaces& faces);
 
-/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell: Phi at the end of the step.
+/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell, subtracted axis by axis
+/// (flow/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after);
 
