@@ -226,9 +226,8 @@ std::pair<double, double> dust_face(double u_dust) {
                                                std::vector<double>(cells, 0.0)};
     AxisPressureFaces pf;
     pf.force.assign(faces, 0.0), pf.predictor.assign(faces, 0.0), pf.coupling.assign(faces, 0.0);
-    pf.donor.assign(faces, 0.0), pf.reversed.assign(faces, 0);
-    std::vector<double> change(cells, 0.0);
-    pressure_coupling(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf, change);
+    pf.donor.assign(faces, 0.0), pf.flux.assign(faces, 0.0), pf.reversed.assign(faces, 0);
+    pressure_coupling(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf);
     const std::size_t f = grid.face_index(0, 2, 0, 0);
     return {pf.predictor[f], pf.donor[f]};
 }

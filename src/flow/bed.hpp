@@ -1,6 +1,11 @@
 // Geometry and initial states of granular beds for the flow scenes: the circular drum of
 // Sect. 4.2 as embedded walls, and a bed at rest in the static (lithostatic) balance
 // dp/dz = -Phi |g| with p = p(Phi, T) from eqs. (15)-(19) (docs/assumptions.md F6).
+//
+//   solves      the lithostatic balance dp/dz = -Phi(p) |g| column by column (RK4), and p(Phi) = p
+//   inputs      drum: cells, radius; bed: Grid, Material, surface height, |g|, T, Phi_rcp, Phi_co
+//   outputs     the drum's Grid (inside flags); Phi per cell of the bed at rest
+//   invariants  0 <= Phi < Phi_rcp; cells above the surface are empty
 #pragma once
 
 #include "closures/material.hpp"

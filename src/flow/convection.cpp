@@ -1,5 +1,6 @@
 #include "flow/convection.hpp"
 
+#include "flow/face_balance.hpp"
 #include "flow/hllc.hpp"
 
 #include <algorithm>
@@ -79,38 +80,33 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
 }
 
 void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
-                     double t, double dt, const FlowFaces& faces, const std::vector<double>& Phi_before,
-                     FlowState& state) {
+                     double t, double dt, const FlowFaces& faces, FlowState& state) {
     const Vec3 g = frame.gravity_at(t);
     Vec3 g_source{};
     for (int a = 0; a < 3; ++a) g_source[a] = mesh.active[a] && !mesh.grid.periodic[a] ? 0.0 : g[a];
     const double angle = -2.0 * frame.omega * dt, ca = std::cos(angle), sa = std::sin(angle);
     const double Phi_vac = settings.Phi_vacuum, T_floor = settings.T_floor;
-    double inv_h[3];
-    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
-    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
-    const double* Ef[3] = {faces[0].energy.data(), faces[1].energy.data(), faces[2].energy.data()};
-    const double* below[3] = {faces[0].mom_below.data(), faces[1].mom_below.data(), faces[2].mom_below.data()};
-    const double* mom[3][3];
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) mom[a][b] = faces[a].mom[b].data();
+    const AxisWeights inv_h = axis_weights(mesh);
+    const AxisFields M = axis_fields(faces, &AxisFaces::mass), Ef = axis_fields(faces, &AxisFaces::energy);
+    // Momentum component b: the flux on a cell's upper face along b's own axis is the one seen from below.
+    AxisFields mom_upper[3], mom_lower[3];
+    for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+            mom_lower[b][a] = faces[a].mom[b].data();
+            mom_upper[b][a] = b == a ? faces[a].mom_below.data() : mom_lower[b][a];
+        }
     double *Phi = state.Phi.data(), *E = state.E.data(), *T = state.T.data();
     double* m[3] = {state.m[0].data(), state.m[1].data(), state.m[2].data()};
     double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
-    const double *before = Phi_before.data(), *X = mesh.position[0].data(), *Y = mesh.position[1].data(),
-                 *Z = mesh.position[2].data();
+    const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
     mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
-        double dPhi = 0.0, dE = 0.0, dm[3] = {0.0, 0.0, 0.0};
-        for (int a = 0; a < 3; ++a) {
-            if (inv_h[a] == 0.0) continue;
-            const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-            dPhi += (M[a][fu] - M[a][fl]) * inv_h[a];
-            dE += (Ef[a][fu] - Ef[a][fl]) * inv_h[a];
-            for (int b = 0; b < 3; ++b) dm[b] += ((b == a ? below[a][fu] : mom[a][b][fu]) - mom[a][b][fl]) * inv_h[a];
-        }
-        Phi[c] = before[c] - dt * dPhi;  // the coupling identity (flow_solver.hpp)
+        const double dPhi = face_balance(M, inv_h, i, ar), dE = face_balance(Ef, inv_h, i, ar);
+        double dm[3];
+        for (int b = 0; b < 3; ++b) dm[b] = face_balance(mom_upper[b], mom_lower[b], inv_h, i, ar);
+        const double Phi_start = Phi[c];
+        Phi[c] = Phi_start - dt * dPhi;  // the coupling identity (flow_solver.hpp)
         E[c] -= dt * dE;
-        for (int b = 0; b < 3; ++b) m[b][c] += dt * (before[c] * g_source[b] - dm[b]);
+        for (int b = 0; b < 3; ++b) m[b][c] += dt * (Phi_start * g_source[b] - dm[b]);
         if (source) {
             double rates[5];
             source(t, X[c], Y[c], Z[c], rates);
@@ -126,6 +122,13 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
         u[2][c] = sa * ux + ca * uz;
         T[c] = empty ? T_floor : E[c] * inv;
     });
+}
+
+void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
+                      FlowState& state) {
+    Frame still;  // no gravity and no rotation: the update of the fluxes alone
+    still.gravity = 0.0;
+    explicit_update(mesh, settings, still, FlowSource{}, 0.0, dt, faces, state);
 }
 
 }  // namespace granseg

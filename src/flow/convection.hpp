@@ -3,6 +3,13 @@
 // walls are mirror states), and the conservative update of (Phi, Phi u, Phi T) from the fluxes
 // with the body forces the potential does not carry (Coriolis, gravity along inactive or
 // periodic axes) and optional source terms. docs/flow_solver.md Sect. 3.
+//
+//   solves      the convective part of eqs. (8), (9), (14) over one step (forward Euler, unsplit)
+//   inputs      FlowMesh; the state and closures at t^n, psi and the loads of an axis (fluxes);
+//               the face fluxes, Frame, sources, t, dt (update)
+//   outputs     AxisFaces of an axis; the state after the update (Phi, Phi u, Phi T, u, T)
+//   invariants  mass, Phi T and tangential momentum fluxes are exactly 0 on walls; the update of
+//               Phi is the coupling identity Phi_new = Phi - dt div M (flow/face_balance.hpp)
 #pragma once
 
 #include "flow/flow_mesh.hpp"
@@ -20,13 +27,17 @@ namespace granseg {
 void hllc_face_fluxes(const FlowMesh& mesh, int axis, const FlowState& state, const CellClosures& closures,
                       const Potential& psi, const AxisLoads& loads, AxisFaces& faces);
 
-/// Phi = Phi_before - dt sum_axis (M[upper] - M[lower])/h_axis (the coupling identity), the same
-/// for Phi u and Phi T with their fluxes; then gravity along inactive or periodic axes, the
-/// sources (if any) at time t, and Coriolis du/dt = 2 omega (u_z, -u_x) as a rotation of
-/// (u_x, u_z) by -2 omega dt (exact); finally u and T of the new state (Phi u is left unrotated:
-/// the implicit viscosity step rebuilds it from u).
+/// Phi = Phi - dt sum_axis (M[upper] - M[lower])/h_axis (the coupling identity), the same for
+/// Phi u and Phi T with their fluxes; then gravity on the Phi at the start along inactive or
+/// periodic axes, the sources (if any) at time t, and Coriolis du/dt = 2 omega (u_z, -u_x) as a
+/// rotation of (u_x, u_z) by -2 omega dt (exact); finally u and T of the new state (Phi u is left
+/// unrotated: the implicit viscosity step rebuilds it from u).
 void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
-                     double t, double dt, const FlowFaces& faces, const std::vector<double>& Phi_before,
-                     FlowState& state);
+                     double t, double dt, const FlowFaces& faces, FlowState& state);
+
+/// The update of explicit_update() by the fluxes alone (no body force, source or rotation): the
+/// semi-implicit step's transport, whose predictor already applied the forces.
+void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
+                      FlowState& state);
 
 }  // namespace granseg

@@ -1,11 +1,18 @@
 // The equation of state of eqs. (15)-(19) solved for the volume fraction: Phi(p; T) with
 // p(Phi) = g(Phi) (Phi T + Theta(Phi - Phi_co) T0 (Phi - Phi_co)), g = (1 - Phi/Phi_rcp)^(-beta)
-// (closures/closures.hpp, assumption A1). p(Phi) is increasing and convex on [0, Phi_rcp) (g is
-// increasing and convex, and the yield term switches on with a jump of the slope), so its
-// inverse Phi(p) is increasing and concave, maps [0, inf) onto [0, Phi_rcp), and never reaches
-// Phi_rcp: the pressure-implicit step solves for p and takes Phi = Phi(p) (docs/flow_solver.md
-// Sect. 5). Below p = 0 the inverse is continued by its tangent at 0, Phi = p/T (slope
-// 1/c^2 = 1/T at Phi = 0), which keeps it concave and smooth for Newton's method.
+// (closures/closures.hpp, assumption A1).
+//
+//   solves      p(Phi; T) = p for Phi
+//   inputs      Material, p, T > 0, Phi_rcp, Phi_co, a guess (the cell's Phi)
+//   outputs     Phi, dPhi/dp, the closure evaluations it took
+//   invariants  0 <= Phi < Phi_rcp for p >= 0; Phi(p) increasing and concave
+//
+// p(Phi) is increasing and convex on [0, Phi_rcp) (g is increasing and convex, and the yield term
+// switches on with a jump of the slope), so its inverse Phi(p) is increasing and concave, maps
+// [0, inf) onto [0, Phi_rcp), and never reaches Phi_rcp: the pressure-implicit step solves for p
+// and takes Phi = Phi(p) (docs/flow_solver.md Sect. 5). Below p = 0 the inverse is continued by
+// its tangent at 0, Phi = p/T (slope 1/c^2 = 1/T at Phi = 0), which keeps it concave and smooth
+// for Newton's method.
 //
 // For the power law with beta = 1 (the default), p (1 - Phi/Phi_rcp) = Phi T + T0 (Phi - Phi_co)^+
 // is linear in Phi and the inverse has a closed form; other laws are inverted by a safeguarded

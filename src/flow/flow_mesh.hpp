@@ -4,6 +4,12 @@
 // the loops over rows of cells that the kernels share (rows among OpenMP threads, the cells of a
 // row vectorised). Built once from the grid; every kernel takes it as a const input.
 //
+//   solves      nothing: the geometry and loops every flow kernel shares
+//   inputs      a Grid (inside flags, periodic axes)
+//   outputs     FlowMesh: inside cells, active axes, face kinds and lists, rows, the loops
+//   invariants  built once and read only; a face is interior, a wall or none; on a wall both
+//               cells of a MeshFace name the inside cell
+//
 // Rows: the ny * nz rows of cells along x, row r = j + ny k. An axis with one cell is inactive
 // (the fields do not vary along it); a periodic axis joins its first and last layer.
 #pragma once

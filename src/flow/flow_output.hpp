@@ -1,6 +1,11 @@
 // Running the flow solver in a scene and writing what it computed: progress and the mass
 // invariant, gnuplot tables of fields and profiles, legacy VTK files for ParaView, and the
 // diagnostics of a rotating drum (free-surface angle, flowing and resting material).
+//
+//   solves      nothing: runs a FlowSolver to t_end and measures its state
+//   inputs      a FlowSolver after a step; the level, radius and speed of the drum diagnostics
+//   outputs     DataTables (fields, profiles, counts), VTK text, DrumState
+//   invariants  the total mass drifts by less than kMassDriftLimit (InvariantError otherwise)
 #pragma once
 
 #include "core/output.hpp"

@@ -1,5 +1,10 @@
 // Numerical parameters of the flow solver, the optional source terms, and the wall velocities
 // (docs/flow_solver.md Sect. 6; every default is justified in docs/assumptions.md F1-F8).
+//
+//   solves      nothing: the numerical parameters and their defaults
+//   inputs      a scene's [flow] section (src/scenes) or a program
+//   outputs     FlowSettings, FlowSource, WallVelocities, the viscosity solve of each mode
+//   invariants  T_floor, Phi_vacuum and cfl > 0 (checked by FlowSolver)
 #pragma once
 
 #include "core/choice.hpp"

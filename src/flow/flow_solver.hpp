@@ -1,25 +1,79 @@
 // The compressible granular flow solver (Sect. 2.1, eqs. 8, 9, 14 with the asymmetric stress of
 // eqs. 10-11 and the closures of eqs. 15-20). Walk-through: docs/flow_solver.md.
 //
-// FlowSolver owns the state (flow/flow_state.hpp) and runs one step as a sequence of kernels,
-// each a free function with const inputs in its own file (first order in time and space, Lie
-// splitting):
-//   1. primitives and closures at t^n (flow/primitives.hpp); the potential psi and, per axis,
-//      the face potentials and unsupported loads (flow/loads.hpp);
-//   2. per axis the HLLC face fluxes with hydrostatic reconstruction (flow/convection.hpp,
-//      flow/hllc.hpp); transport coefficients at the effective pressure (flow/primitives.hpp);
-//      dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0 and T, u_t
-//      stay convex combinations) and from their compaction (so Phi stays < Phi_rcp)
-//      (flow/time_step.hpp);
-//   3. the conservative update, body forces along inactive or periodic axes, optional sources,
-//      Coriolis rotation of u over dt (exact) (flow/convection.hpp);
-//   4. implicit viscosity d(Phi u)/dt = div(eta grad u), split by axis into line solves
-//      (flow/viscosity.hpp);
-//   5. temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
+//   solves      eqs. (8), (9), (14) step by step, first order in time and space, in the x-z plane,
+//               a column or a slab, with embedded walls, in a frame that may turn (flow/frame.hpp)
+//   inputs      Grid, Material, FlowSettings, Frame; the state (set_state), optionally phi_hat per
+//               cell, wall velocities of the domain boundary, sources
+//   outputs     the state after each step and the coupling hand-over below
+//   invariants  Phi_new = Phi_old - dt div M in every inside cell; finite Phi >= 0, T >= 0 and u;
+//               Phi < Phi_rcp (a step that breaks one throws InvariantError)
+//
+// FlowSolver owns the state (flow/flow_state.hpp) and runs a step as a list of stages, each a
+// private member function that calls free kernels with const inputs (Lie splitting).
+// Both modes:
+//   0. Phi_before = Phi; primitives u, T, the closures and the cell potential psi at t^n
+//      (flow/primitives.hpp, flow/loads.hpp);
+//   ...the mode's stages...
+//   T. temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
 //      (3/2) div(lambda grad T) implicit in one sparse system (T relaxes towards
 //      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow/temperature.hpp).
+// Explicit step (time_stepping = "explicit", explicit_step):
+//   E1. per active axis the face potentials and the unsupported loads (flow/loads.hpp) and the
+//       HLLC face fluxes with hydrostatic reconstruction (flow/convection.hpp, flow/hllc.hpp);
+//       the effective pressure of eta, lambda, eps Phi (flow/primitives.hpp);
+//   E2. dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0 and T,
+//       u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
+//       (flow/time_step.hpp);
+//   E3. the conservative update, body forces along inactive or periodic axes, optional sources,
+//       Coriolis rotation of u over dt (exact) (explicit_update, flow/convection.hpp);
+//   E4. implicit viscosity d(Phi u)/dt = div(eta grad u), all axes in one system or split by
+//       axis into line solves (flow/coupled_viscosity.hpp, flow/viscosity.hpp).
+// Semi-implicit step (the default, semi_implicit_step; kernels in flow/semi_implicit.hpp):
+//   S1. dt from the material speeds |u_n|, |U| and the outflow and compaction of the last step's
+//       fluxes, at most kStepGrowth times the last dt (flow/time_step.hpp);
+//   S2. forces at t^n: face potentials and loads, reconstructed pressures p' and face forces D,
+//       the effective pressure; the state at t^n kept for a repeat;
+//   S3. predictor: each cell's share of D and its weight at t^n, Coriolis, sources (E3 without
+//       mass flux), the force part A of that change; implicit viscosity (E4): u*;
+//   S4. pressure correction: face predictor U*, donors, coupling K and explicit mass change; the
+//       pressure solve for the increments dp; corrected faces U, M = Phi_d U, the dust cap,
+//       Phi after the step, the fluxes of momentum and Phi T; again (at most 4 solves) while
+//       the pressure reversed faces onto a cell holding clearly less; then the outflow and
+//       compaction bounds checked on these fluxes;
+//   S5. a broken bound: Phi, Phi u, Phi T and dp back to t^n, half the dt, again from S3;
+//   S6. transport: Phi_new = Phi - dt div M exactly, Phi u and Phi T with the donors' values
+//       (transport_update, flow/convection.hpp);
+//   S7. the velocity change since u* diffused by the viscosity solve of S3 with walls at rest
+//       (the solve is linear): u = u* + V0(u - u*).
 // Walls: no-slip (moving domain-boundary walls allowed), adiabatic, no mass flux. An axis with
 // one cell is inactive (the field does not vary along it). Embedded walls: grid.inside.
+//
+// What each stage reads and writes. Fields of state_ and closures_ by their symbols (Phi, Phi u,
+// Phi T, u, T; p, c, eta, lambda, eps Phi, Phi_rcp, Phi_co), psi = potential_; "faces" and "pf"
+// are faces_ and pressure_ of the active axes; other names are members.
+//   stage  reads                                           writes
+//   0      Phi, Phi u, Phi T, phi_hat_                     Phi_before_, u, T, closures_, psi (cells)
+//   E1     Phi, u, T, p, c, Phi_co, psi                    psi (faces), loads_, faces, eta, lambda, eps Phi
+//   E2     Phi, Phi_rcp, faces M and speed                 dt
+//   E3     faces, Phi                                      Phi, Phi u, Phi T, u, T
+//   E4     Phi, u, eta                                     u, Phi u (line_rhs_: split solves)
+//   S1     Phi, u, c, Phi_co, Phi_rcp, faces M and speed   dt
+//          (the last step's), dt_
+//   S2     Phi, u, T, p, c, Phi_co, psi; Phi u, Phi T      psi (faces), loads_, pf (p', p - p', D;
+//                                                          reversed = 0), faces p, eta, lambda,
+//                                                          eps Phi; m_start_, u_start_, E_start_
+//   S3     pf, Phi, u (a repeat: the last attempt's u*),   faces (M = 0), Phi u, Phi T, u, T (Phi with
+//          c, u_start_, eta                                sources), force_part_; then u, Phi u (u*;
+//                                                          line_rhs_: split solves)
+//   S4     Phi, u, T, p, Phi_rcp, Phi_co, force_part_,     pf (U*, donor, K, flux, reversed),
+//          pf, dp_                                         mass_change_, dp_, faces, dust_scale_,
+//                                                          Phi_after_
+//   S5     Phi_before_, m_start_, E_start_                 Phi, Phi u, Phi T, dp_ (S3 rebuilds u, T)
+//   S6     Phi, Phi u, Phi T, u, faces                     u_star_; Phi, Phi u, Phi T, u, T
+//   S7     u, u_star_, Phi_before_, Phi, eta               velocity_change_, u, Phi u (increment_,
+//                                                          line_rhs_: split solves)
+//   T      Phi, u, T, eta, lambda, eps Phi                 heat_, T, Phi T
 //
 // Coupling hand-over (per step): Phi before and after, T, u, the cell velocity gradient, and
 // per axis the face mass flux M (Phi u_n) such that in every inside cell
@@ -41,6 +95,7 @@
 #include "flow/time_step.hpp"
 
 #include <array>
+#include <chrono>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -111,24 +166,64 @@ public:
     const FlowCounters& counters() const { return counters_; }
 
 private:
-    /// Primitives, closures and the cell potential at t_.
+    /// Adds the wall-clock time of its scope to one of timers_.
+    class Stopwatch {
+    public:
+        explicit Stopwatch(double& account);
+        ~Stopwatch();
+    private:
+        double& account_;
+        std::chrono::steady_clock::time_point start_;
+    };
+
+    // Both modes (flow_solver.cpp).
+    /// 0. Primitives, closures and the cell potential at t_.
     void update_closures();
-    /// The explicit step up to the temperature: HLLC face fluxes, effective pressure, dt, update,
-    /// implicit viscosity. Returns dt and its bound.
-    StepSize explicit_step(double t_end);
-    /// The semi-implicit step up to the temperature (flow/semi_implicit.hpp): dt, predictor with
-    /// the pressure at t^n, implicit viscosity, pressure solve, transport; repeated with half the
-    /// dt while the step would break a bound. Returns dt and its bound.
-    StepSize semi_implicit_step(double t_end);
-    /// The implicit viscosity of a step dt, split or coupled as the settings say.
+    /// The face potentials and unsupported loads of `axis` at t^n.
+    void face_loads(int axis);
+    /// E4, S3: the implicit viscosity of a step dt, coupled or split as the settings say.
     void viscosity(double dt);
+    /// T. The temperature step.
+    void temperature(double dt);
+    void check_invariants() const;
+
+    // The explicit step (flow_solver.cpp): E1-E3, then E4. Returns dt and its bound.
+    StepSize explicit_step(double t_end);
+    /// E1-E3: HLLC fluxes, effective pressure, dt, the update.
+    StepSize explicit_convection(double t_end);
+
+    // The semi-implicit step (semi_implicit_step.cpp): S1-S7. Returns dt and its bound.
+    StepSize semi_implicit_step(double t_end);
+    /// S1. dt and its bound.
+    StepSize semi_implicit_dt(double t_end);
+    /// S2. The forces at t^n and the effective pressure.
+    void forces_at_start();
+    /// S2-S5: keeps the state at t^n; predictor, viscosity, pressure correction, repeated with
+    /// half the dt until the fluxes keep every bound. Returns the dt that did.
+    StepSize predict_and_correct(StepSize size);
+    /// S2. m_start_, u_start_, E_start_.
+    void keep_start_state();
+    /// S3. The predictor's forces at t^n and the force part A (before viscosity).
+    void predictor_forces(double dt);
+    /// S4. The pressure correction with its donor passes; whether the fluxes keep every bound
+    /// (false also when the pressure equation did not converge).
+    bool pressure_correct(double dt);
+    /// S4. U*, donors, K of every face and the explicit mass change r_c.
+    void face_predictor(double dt);
+    /// S4. The pressure solve for dp_ (counted); whether it converged.
+    bool solve_pressure();
+    /// S4. Corrected faces, dust cap, Phi after the step and the fluxes; returns how many faces
+    /// the pressure reversed (marked for the smaller donor).
+    long corrected_fluxes(double dt);
+    /// S5. Restores the state at t^n and halves dt; throws InvariantError below dt_min.
+    StepSize restart_with_half_dt(StepSize size);
+    /// S6. Transport by the corrected fluxes (u* kept in u_star_).
+    void transport(double dt);
+    /// S7. The velocity change since u* diffused like the predictor's: u = u* + V0(u - u*).
+    void diffuse_increments(double dt);
     /// A velocity change du diffused by the step's viscosity solve with walls at rest (the
     /// solve is linear: V(u + du) = V(u) + V0(du)); cells empty at t^n keep du.
     void diffuse_change(double dt, std::array<std::vector<double>, 3>& du);
-    /// The semi-implicit step's velocity change after the predictor (transport, pressure
-    /// increments) diffused like the predictor's: u = u* + V0(u - u*).
-    void viscous_increment(double dt);
-    void check_invariants() const;
 
     FlowMesh mesh_;
     Material material_;
@@ -149,17 +244,26 @@ private:
     FlowFaces faces_;
     PressureFaces pressure_;
     PressureSolver pressure_solver_;
-    std::vector<double> dp_, change_;  // pressure increments of the last step, explicit mass change
-    std::array<std::vector<double>, 3> force_part_;  // velocity change of the predictor's forces, before viscosity
-    std::array<std::vector<double>, 3> u_star_;      // the predictor's velocity after viscosity
-    std::array<std::vector<double>, 3> change_u_;    // velocity change of the rest of the step
-    FlowState increment_;  // split viscosity's work state for diffuse_change: Phi at t^n and du
+    PressureSolveStats pressure_stats_;  // of the last pressure solve
+    // Per cell, each with one meaning (the table in the header comment says which stage writes
+    // and reads it):
+    std::array<std::vector<double>, 3> m_start_, u_start_;  // Phi u and u at t^n, for a repeat
+    std::vector<double> E_start_;                           // Phi T at t^n, for a repeat
+    std::array<std::vector<double>, 3> force_part_;  // A: velocity change of the predictor's forces, before viscosity
+    std::array<std::vector<double>, 3> u_star_;      // u*: the predictor's velocity after viscosity
+    std::vector<double> mass_change_;  // r_c: mass change of the explicit face fluxes (pressure equation)
+    std::vector<double> dp_;           // pressure increments of the last solve (its warm start next time)
+    std::vector<double> dust_scale_;   // factor on a dust cell's outgoing mass fluxes (1 elsewhere)
+    std::vector<double> Phi_after_;    // Phi at the end of the step (shares of the increment force)
+    std::array<std::vector<double>, 3> velocity_change_;  // u - u* after transport, then diffused
+    FlowState increment_;            // split viscosity's state for diffuse_change: Phi at t^n and du
+    std::vector<double> line_rhs_;   // right-hand side of the split viscosity's line solves (swapped with u)
+    std::vector<double> heat_;       // viscous heating H of the temperature step
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
     TemperatureSolver temperature_;
     std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
-    std::vector<double> work_, heat_;  // one value per cell, work space of the kernels
     FlowTimers timers_;
     FlowCounters counters_;
 };

@@ -5,8 +5,16 @@
 //   Potential     the potential psi of gravity and the centrifugal force per cell and face;
 //   AxisLoads     per axis and cell: the weight a cell passes on or cannot carry (free surface);
 //   AxisFaces     per axis and face: the convective fluxes and what the time step needs.
+//
+//   solves      nothing: the fields the kernels share
+//   inputs      sized and owned by FlowSolver
+//   outputs     read and written by the kernels as the table in flow/flow_solver.hpp says
+//   invariants  one value per cell (core/grid.hpp order) or per face of an axis; after the
+//               primitives and every update u = Phi u/Phi and T = Phi T/Phi in cells holding
+//               material, u = 0 and T = T_floor in empty ones (Phi <= Phi_vacuum)
+//
 // The kernels (loads, primitives, convection, time_step, viscosity, temperature) read some of
-// these as const inputs and write others; docs/flow_solver.md Sect. 2 lists which.
+// these as const inputs and write others; the table in flow/flow_solver.hpp lists which.
 #pragma once
 
 #include <array>
@@ -36,6 +44,7 @@ struct Potential {
 struct AxisLoads {
     std::vector<double> load;   // weight per area a cell's downhill face carries beyond p + Phi |d_psi|
     std::vector<double> carry;  // pressure an unsupported cell passes on at its uphill face
+    std::vector<double> downhill;  // pressure at the downhill face, what rests on the next cell of the sweep
 };
 
 struct AxisFaces {

@@ -2,6 +2,11 @@
 // rotating drum of Sect. 4.2): gravity, an optional rotation about an axis along y, and the
 // potential psi whose differences the hydrostatic reconstruction uses.
 //
+//   solves      nothing: gravity and the lab-frame transforms at time t
+//   inputs      |g|, tilt, omega, the rotation axis (x_c, z_c)
+//   outputs     g(t), positions and velocities in the lab frame
+//   invariants  |g(t)| = |g|; the transforms are rotations (lengths are kept)
+//
 // Conventions (docs/flow_solver.md): the x-z plane is plotted with x to the right and z up, so
 // the y axis (the drum axis) points into the page. `omega` > 0 turns the drum counter-clockwise
 // as plotted. The solver works in the frame turning with the drum, in which

@@ -3,6 +3,12 @@
 // system in the conserved variables (Phi, Phi u, Phi T), with a hydrostatic reconstruction of the
 // face states (Audusse, Bouchut, Bristeau, Klein & Perthame, SIAM J. Sci. Comput. 25, 2004).
 //
+//   solves      the Riemann problem of eqs. (8), (9), (14) at one face, approximately (HLLC)
+//   inputs      the two face states (FaceState), hydrostatically reconstructed
+//   outputs     FaceFlux: fluxes of mass, momentum and Phi T, and p*
+//   invariants  no flux between empty states; no mass flux against a mirror state (a wall); a
+//               contact at rest between equal pressures stays at rest; 0 <= Phi' <= Phi
+//
 // The system has no p div u work term in eq. (14), so T is carried like the tangential
 // velocities: the waves are u_n - c, u_n (a contact carrying T and u_t), u_n + c with
 // c^2 = dp/dPhi at fixed T (closures.hpp). HLLC resolves the contact, so a layer at rest with

@@ -61,7 +61,7 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
 
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
                        const FlowState& state, const CellClosures& closures, const Potential& potential,
-                       AxisLoads& loads, std::vector<double>& scratch) {
+                       AxisLoads& loads) {
     const Grid& grid = mesh.grid;
     const Vec3 g = frame.gravity_at(t);
     const double g_a = !grid.periodic[a] ? g[a] : 0.0;
@@ -87,7 +87,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
     // visited in the direction of gravity along the axis so that loads pass down chains of
     // unsupported cells (dust on a partly filled surface cell), scaled by `weight` per link.
     const std::size_t nx = grid.n[0], ny = grid.n[1];
-    double *load = loads.load.data(), *carry = loads.carry.data(), *out = scratch.data();
+    double *load = loads.load.data(), *carry = loads.carry.data(), *downhill = loads.downhill.data();
     const double *Phi = state.Phi.data(), *p = closures.p.data(), *psi = potential.cell.data();
     const double *psi_face = potential.face[a].data(), *co = closures.Phi_co.data();
     const unsigned char *in = mesh.inside.data(), *kind = mesh.face_kind[a].data();
@@ -101,7 +101,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
         const bool unsupported = filled && (up_hi || up_lo) && p[c] <= Phi[c] * rise;
         // The cell above along the sweep is the uphill neighbour when it was visited just before.
         const bool from_hi = up_hi && dir < 0 && kind[fu] == kInterior, from_lo = up_lo && dir > 0 && kind[fl] == kInterior;
-        const double arriving = from_hi ? out[c + hi] : from_lo ? out[c + lo] : 0.0;
+        const double arriving = from_hi ? downhill[c + hi] : from_lo ? downhill[c + lo] : 0.0;
         // It passes that on only while it and what rests on it would fit into the cell at the
         // loosest load-bearing packing Phi_co (arriving / (rise + fall) is the volume fraction the
         // material above would add): a partly filled surface cell with dust on it rests on the
@@ -109,7 +109,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
         const bool rests = (Phi[c] - co[c]) * (rise + fall) + arriving <= 0.0;
         carry[c] = unsupported && rests ? weight * arriving : 0.0;
         load[c] = filled ? unsupported_load(Phi[c], p[c], rise) + carry[c] : 0.0;
-        out[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
+        downhill[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };
     if (a == 0) {
 #pragma omp parallel for schedule(static) if (mesh.parallel)

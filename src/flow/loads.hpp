@@ -1,6 +1,11 @@
 // The potential psi and the loads of the hydrostatic reconstruction (docs/flow_solver.md Sect. 3;
 // the reconstruction itself is hydrostatic_reconstruction() in flow/hllc.hpp).
 //
+//   solves      nothing over time: psi and the unsupported loads at t^n
+//   inputs      FlowMesh, FlowSettings, Frame, t; Phi, p, Phi_co
+//   outputs     psi per cell and face; per axis and cell load, carry and downhill (AxisLoads)
+//   invariants  load, carry, downhill >= 0, and 0 in empty cells
+//
 // psi = -g . x - omega^2 |r|^2/2 (gravity along the bounded active axes and the centrifugal
 // potential of the rotating frame, flow/frame.hpp) is piecewise constant per cell; a face takes
 // the mean of its two cells (a wall's ghost is the mirror cell). A cell whose own pressure cannot
@@ -28,10 +33,8 @@ void cell_potential(const FlowMesh& mesh, const Frame& frame, double t, std::vec
 void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int axis, const std::vector<double>& psi,
                     std::vector<double>& psi_face);
 
-/// `load` and `carry` of every cell along `axis` from Phi, p, Phi_co and the potentials; `scratch`
-/// is work space of one value per cell.
+/// `load`, `carry` and `downhill` of every cell along `axis` from Phi, p, Phi_co and the potentials.
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int axis,
-                       const FlowState& state, const CellClosures& closures, const Potential& psi, AxisLoads& loads,
-                       std::vector<double>& scratch);
+                       const FlowState& state, const CellClosures& closures, const Potential& psi, AxisLoads& loads);
 
 }  // namespace granseg

@@ -2,6 +2,12 @@
 // of eqs. (15)-(20) (p, the sound speed c with c^2 = dp/dPhi at fixed T, eta, lambda, eps Phi)
 // at the cell's packing limits Phi_rcp(phi_hat), Phi_co(phi_hat); and the effective pressure
 // that scales eta, lambda and eps Phi in partly filled surface cells (assumption F7).
+//
+//   solves      nothing over time: primitives and closures (eqs. 15-20) at t^n
+//   inputs      FlowMesh, Material, FlowSettings, phi_hat, Phi, Phi u, Phi T; the face pressures
+//   outputs     u, T and CellClosures; eta, lambda, eps Phi at the effective pressure
+//   invariants  Phi < Phi_rcp in every inside cell (InvariantError otherwise); empty cells have
+//               u = 0, T = T_floor and no transport coefficients
 #pragma once
 
 #include "closures/material.hpp"

@@ -1,5 +1,6 @@
 #include "flow/semi_implicit.hpp"
 
+#include "flow/face_balance.hpp"
 #include "flow/hllc.hpp"
 #include "flow/transport_flux.hpp"
 
@@ -81,7 +82,7 @@ void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& st
 
 void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt, const FlowState& state,
                        const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
-                       AxisPressureFaces& pf, std::vector<double>& change) {
+                       AxisPressureFaces& pf) {
     const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
     const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
     const double* Phi_co = closures.Phi_co.data();
@@ -89,7 +90,7 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
         if (F.kind != kInterior || !(std::max(Phi[lo], Phi[hi]) > Phi_vac)) {  // open if either cell holds material
-            pf.predictor[f] = pf.coupling[f] = pf.donor[f] = 0.0;
+            pf.predictor[f] = pf.coupling[f] = pf.donor[f] = pf.flux[f] = 0.0;
             return;
         }
         // The mass-weighted mean; but a donor holding (almost) nothing moves its material at its
@@ -106,19 +107,20 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];
         pf.predictor[f] = U;
         pf.donor[f] = donor;
+        pf.flux[f] = donor * U;
         // Between two dust cells the face stays explicit (dry face): the pressure increments there
         // are only an extension of their neighbours' and would push on almost no mass.
         const bool dust = is_dust(Phi[lo], Phi_co[lo]) && is_dust(Phi[hi], Phi_co[hi]);
         pf.coupling[f] = dust ? 0.0 : (dt / h) * (dt / h) * donor / Phi_f;
     });
-    const double rate = dt / h;
-    const double *U = pf.predictor.data(), *donor = pf.donor.data();
-    const unsigned char* in = mesh.inside.data();
+}
+
+void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change) {
+    const AxisFields flux = axis_fields(pf, &AxisPressureFaces::flux);
+    const AxisWeights rate = axis_weights(mesh, dt);
     double* r = change.data();
-    mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
-        const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
-        if (in[c]) r[c] -= rate * (donor[fu] * U[fu] - donor[fl] * U[fl]);
-    });
+    mesh.for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* ar) { r[c] = subtract_by_axis(0.0, flux, rate, i, ar); });
 }
 
 long mark_reversed_faces(const FlowMesh& mesh, int a, const FlowState& state, const AxisFaces& faces,
@@ -150,19 +152,14 @@ void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const Flo
 
 void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
                       std::vector<double>& scale, FlowFaces& faces) {
-    double rate[3];
-    for (int a = 0; a < 3; ++a) rate[a] = mesh.active[a] ? dt / mesh.grid.h[a] : 0.0;
+    const AxisWeights rate = axis_weights(mesh, dt);
+    const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
     double* s = scale.data();
     mesh.for_each_inside([&](std::size_t c) { s[c] = 1.0; });
     mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
         if (!is_dust(Phi[c], Phi_co[c])) return;
-        double out = 0.0;  // the share of Phi that leaves in this step
-        for (int a = 0; a < 3; ++a) {
-            if (rate[a] == 0.0) continue;
-            const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-            out += rate[a] * (std::max(0.0, faces[a].mass[fu]) + std::max(0.0, -faces[a].mass[fl]));
-        }
+        const double out = face_outflow(M, rate, i, ar);  // the share of Phi that leaves in this step
         if (out > kDustOutflow * Phi[c]) s[c] = kDustOutflow * Phi[c] / out;
     });
     for (int a = 0; a < 3; ++a)
@@ -175,17 +172,12 @@ void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, c
 
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after) {
-    mesh.for_each_inside([&](std::size_t c) { Phi_after[c] = Phi[c]; });
-    for (int a = 0; a < 3; ++a) {
-        if (!mesh.active[a]) continue;
-        const double rate = dt / mesh.grid.h[a], *M = faces[a].mass.data();
-        const unsigned char* in = mesh.inside.data();
-        double* out = Phi_after.data();
-        mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
-            const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
-            if (in[c]) out[c] -= rate * (M[fu] - M[fl]);
-        });
-    }
+    const AxisFields M = axis_fields(faces, &AxisFaces::mass);
+    const AxisWeights rate = axis_weights(mesh, dt);
+    const double* before = Phi.data();
+    double* after = Phi_after.data();
+    mesh.for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* ar) { after[c] = subtract_by_axis(before[c], M, rate, i, ar); });
 }
 
 void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const AxisPressureFaces& pf,

@@ -5,6 +5,14 @@
 // Flow", 1980, Sect. 6.8) on cells that keep the hydrostatic reconstruction of the explicit
 // scheme.
 //
+//   solves      the face kernels of the semi-implicit step (predictor, face predictor, corrected
+//               faces and fluxes; the pressure equation itself is flow/pressure_solver.hpp)
+//   inputs      FlowMesh, the state and closures (at t^n, or u* after the predictor), psi, the
+//               loads, the force part A, dt, the pressure increments dp
+//   outputs     AxisPressureFaces (p', D, U*, donor, K, M_x); AxisFaces; r_c; Phi after the step
+//   invariants  M = 0 on walls; D = 0 on every face of the discrete lithostatic balance (a bed
+//               at rest stays at rest); a dust cell loses at most kDustOutflow of its Phi a step
+//
 // Per face between the cells lo and hi of one axis (cell size h, Phi_f = (Phi_lo + Phi_hi)/2):
 //   reconstructed pressures p'_lo, p'_hi of the two cells at the face (flow/hllc.hpp, with the
 //     loads of flow/loads.hpp) and the face force D = p'_lo - p'_hi: in the discrete lithostatic
@@ -61,6 +69,7 @@ struct AxisPressureFaces {
     std::vector<double> predictor;         // U* for the current dt
     std::vector<double> coupling;          // K
     std::vector<double> donor;             // Phi_d
+    std::vector<double> flux;              // the explicit flux M_x = Phi_d U*
     std::vector<unsigned char> reversed;   // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
 };
 
@@ -79,11 +88,15 @@ void pressure_faces(const FlowMesh& mesh, int axis, double gravity, const FlowSt
 void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
                      const AxisPressureFaces& pf, AxisFaces& faces);
 
-/// Part 2 for `axis`: U*, donor and K of every face from the predicted state (u*) and the force
-/// part A of the predictor; adds r_c = -dt sum_faces (M_x[upper] - M_x[lower])/h to `change`.
+/// Part 2 for `axis`: U*, donor, K and the explicit flux M_x = Phi_d U* of every face from the
+/// predicted state (u*) and the force part A of the predictor.
 void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
                        const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
-                       AxisPressureFaces& pf, std::vector<double>& change);
+                       AxisPressureFaces& pf);
+
+/// Part 2, per inside cell: the mass change of the explicit fluxes,
+/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h, subtracted axis by axis (flow/face_balance.hpp).
+void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change);
 
 /// Marks the faces whose mass flux leaves a cell holding clearly less than the donor it was
 /// computed with (the pressure reversed the flow there); returns how many it marked.
@@ -112,7 +125,8 @@ void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const 
 void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
                       std::vector<double>& scale, FlowFaces& faces);
 
-/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell: Phi at the end of the step.
+/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell, subtracted axis by axis
+/// (flow/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after);
 

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "flow/face_balance.hpp"
 #include "flow/semi_implicit.hpp"
 
 #include <algorithm>
@@ -10,49 +11,17 @@
 
 namespace granseg {
 
-StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& cl,
-                              const FlowFaces& faces) {
+namespace {
+/// The largest rates over inside cells (StepRates): wave(c, i, rows) is the cell's wave rate,
+/// outflow(c, out) its outflow rate for an outflow out > 0 (face_outflow with 1/h), and the
+/// compaction rate is its net inflow over the gap Phi_rcp - Phi.
+template <class Wave, class Outflow>
+StepRates largest_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
+                        const FlowFaces& faces, Wave&& wave, Outflow&& outflow) {
     const std::size_t nx = mesh.grid.n[0];
-    const double *Phi = state.Phi.data(), *rcp = cl.Phi_rcp.data();
-    const unsigned char* in = mesh.inside.data();
-    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
-    const double* S[3] = {faces[0].speed.data(), faces[1].speed.data(), faces[2].speed.data()};
-    double inv_h[3];
-    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
-    double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
-#pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (mesh.parallel)
-    for (std::size_t r = 0; r < mesh.rows; ++r) {
-        AxisRow ar[3];
-        for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
-        for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
-            const std::size_t c = nx * r + i;
-            if (!in[c]) continue;
-            double cfl = 0.0, out = 0.0, div = 0.0;
-            for (int a = 0; a < 3; ++a) {
-                if (inv_h[a] == 0.0) continue;
-                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                cfl += std::max(S[a][fl], S[a][fu]) * inv_h[a];
-                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
-                div += (M[a][fu] - M[a][fl]) * inv_h[a];
-            }
-            rate = std::max(rate, cfl);
-            if (out > 0.0) outflow_rate = std::max(outflow_rate, Phi[c] > 0.0 ? out / Phi[c] : INFINITY);
-            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (rcp[c] - Phi[c]));
-        }
-    }
-    return {rate, outflow_rate, compaction_rate};
-}
-
-StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
-                              const FlowFaces& faces, bool first) {
-    const std::size_t nx = mesh.grid.n[0];
-    const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
-    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data(), *rcp = closures.Phi_rcp.data();
-    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
-    const double* S[3] = {faces[0].speed.data(), faces[1].speed.data(), faces[2].speed.data()};
-    const double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
-    double inv_h[3];
-    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
+    const double *Phi = state.Phi.data(), *rcp = closures.Phi_rcp.data();
+    const AxisFields M = axis_fields(faces, &AxisFaces::mass);
+    const AxisWeights inv_h = axis_weights(mesh);
     double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
 #pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (mesh.parallel)
     for (std::size_t r = 0; r < mesh.rows; ++r) {
@@ -61,21 +30,45 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
             const std::size_t c = nx * r + i;
             if (!mesh.inside[c]) continue;
-            const double own = is_dust(Phi[c], Phi_co[c]) ? 0.0 : 1.0;  // dust: its outflow is capped instead
-            double cfl = 0.0, out = 0.0, div = 0.0;
-            for (int a = 0; a < 3; ++a) {
-                if (inv_h[a] == 0.0) continue;
-                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                cfl += (std::max({own * std::fabs(u[a][c]), S[a][fl], S[a][fu]}) + sound * cs[c]) * inv_h[a];
-                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
-                div += (M[a][fu] - M[a][fl]) * inv_h[a];
-            }
-            rate = std::max(rate, cfl);
-            if (out > 0.0 && own > 0.0) outflow_rate = std::max(outflow_rate, 2.0 * out / Phi[c]);
+            rate = std::max(rate, wave(c, i, ar));
+            const double out = face_outflow(M, inv_h, i, ar), div = face_balance(M, inv_h, i, ar);
+            if (out > 0.0) outflow_rate = std::max(outflow_rate, outflow(c, out));
             if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (rcp[c] - Phi[c]));
         }
     }
     return {rate, outflow_rate, compaction_rate};
+}
+}  // namespace
+
+StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
+                              const FlowFaces& faces) {
+    const AxisFields S = axis_fields(faces, &AxisFaces::speed);
+    const AxisWeights inv_h = axis_weights(mesh);
+    const double* Phi = state.Phi.data();
+    auto wave = [&](std::size_t, int i, const AxisRow* ar) {
+        return sum_over_axes(inv_h, i, ar,
+                             [&](int a, std::size_t fl, std::size_t fu) { return std::max(S[a][fl], S[a][fu]); });
+    };
+    auto outflow = [&](std::size_t c, double out) { return Phi[c] > 0.0 ? out / Phi[c] : INFINITY; };
+    return largest_rates(mesh, state, closures, faces, wave, outflow);
+}
+
+StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
+                              const FlowFaces& faces, bool first) {
+    const AxisFields S = axis_fields(faces, &AxisFaces::speed);
+    const AxisWeights inv_h = axis_weights(mesh);
+    const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
+    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
+    const double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
+    auto wave = [&](std::size_t c, int i, const AxisRow* ar) {
+        const double own = is_dust(Phi[c], Phi_co[c]) ? 0.0 : 1.0;  // a dust cell's own speed does not count
+        return sum_over_axes(inv_h, i, ar, [&](int a, std::size_t fl, std::size_t fu) {
+            return std::max({own * std::fabs(u[a][c]), S[a][fl], S[a][fu]}) + sound * cs[c];
+        });
+    };
+    // Twice the last step's outflow rate; none for dust, whose outflow is capped instead.
+    auto outflow = [&](std::size_t c, double out) { return is_dust(Phi[c], Phi_co[c]) ? 0.0 : 2.0 * out / Phi[c]; };
+    return largest_rates(mesh, state, closures, faces, wave, outflow);
 }
 
 const char* step_bound_name(StepBound bound) {
@@ -111,9 +104,8 @@ StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t,
 
 bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before,
                         const CellClosures& cl, const FlowFaces& faces) {
-    const double* M[3] = {faces[0].mass.data(), faces[1].mass.data(), faces[2].mass.data()};
-    double inv_h[3];
-    for (int a = 0; a < 3; ++a) inv_h[a] = mesh.active[a] ? 1.0 / mesh.grid.h[a] : 0.0;
+    const AxisFields M = axis_fields(faces, &AxisFaces::mass);
+    const AxisWeights inv_h = axis_weights(mesh);
     long bad = 0;
 #pragma omp parallel for reduction(+ : bad) schedule(static) if (mesh.parallel)
     for (std::size_t r = 0; r < mesh.rows; ++r) {
@@ -122,13 +114,7 @@ bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<doubl
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
             const std::size_t c = mesh.grid.n[0] * r + i;
             if (!mesh.inside[c]) continue;
-            double out = 0.0, div = 0.0;
-            for (int a = 0; a < 3; ++a) {
-                if (inv_h[a] == 0.0) continue;
-                const std::size_t fl = ar[a].face0 + i, fu = fl + ar[a].face_step;
-                out += (std::max(0.0, M[a][fu]) + std::max(0.0, -M[a][fl])) * inv_h[a];
-                div += (M[a][fu] - M[a][fl]) * inv_h[a];
-            }
+            const double out = face_outflow(M, inv_h, i, ar), div = face_balance(M, inv_h, i, ar);
             const bool ok = dt * out <= kOutflowFraction * Phi_before[c] &&
                             -dt * div <= kCompactionFraction * (cl.Phi_rcp[c] - Phi_before[c]);
             bad += ok ? 0 : 1;

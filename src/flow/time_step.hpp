@@ -3,6 +3,13 @@
 //   kOutflowFraction * Phi / (outflow rate)   (Phi stays > 0, T and u_t stay convex combinations),
 //   kCompactionFraction * (Phi_rcp - Phi) / (net inflow rate)   (Phi stays < Phi_rcp, F4),
 //   dt_max and the time left to t_end.
+//
+//   solves      nothing over time: the dt of a step, and whether a step's fluxes keep the bounds
+//   inputs      FlowMesh, the state and closures at t^n, face fluxes and speeds (this step's in
+//               the explicit step, the last step's in the semi-implicit one)
+//   outputs     StepRates; StepSize (dt and the bound that set it); step_within_bounds
+//   invariants  dt <= dt_max, dt <= t_end - t; dt >= dt_min before t_end (InvariantError otherwise)
+//
 // Explicit step: the waves are |u_n| + c, and all three rates come from the face fluxes of the step,
 // which do not depend on dt. Semi-implicit step: the waves are the material speeds |u_n| of the
 // cells and |U| of the last step's faces (and |u_n| + c in the first step, after which dt grows by

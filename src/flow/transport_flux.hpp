@@ -3,11 +3,18 @@
 // equation): the donor cell, the one the mass leaves, carries its velocity (all three components)
 // and temperature (first-order upwind, so T and u stay convex combinations of old values whenever
 // no cell loses more than its mass), and the face pressure p* adds to the normal momentum flux.
+//
+//   solves      the convective flux across one face for a given mass flux M (donor cell)
+//   inputs      the two face states, M, p*
+//   outputs     FaceFlux
+//   invariants  every flux is M times the donor's value (plus p* in the normal momentum)
+//
 // The normal momentum is carried with the donor's u_n, not with the face velocity U = M/Phi_d: a
 // cell draining through a face whose U differs from its own u_n would otherwise keep the momentum
 // difference M (u_n - U) dt/h in its remaining mass, a kick that grows without bound as the cell
 // empties (measured: dust at 1e5 m/s and T ~ 1e9 m^2/s^2 in a collapsing heap, docs/flow_solver.md
 // Sect. 5).
+//
 // Same orientation and result type as the HLLC flux of flow/hllc.hpp: L is the cell below the
 // face along the axis, R the cell above.
 #pragma once
