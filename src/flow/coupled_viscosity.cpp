@@ -1,7 +1,7 @@
 #include "flow/coupled_viscosity.hpp"
 
 #include "core/error.hpp"
-#include "flow/diffusion_lines.hpp"
+#include "flow/diffusion_faces.hpp"
 
 #include <algorithm>
 
@@ -51,7 +51,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         for (const MeshFace& f : mesh.faces[a]) {
             if (f.kind == kInterior) {
                 if (f.repeat) continue;
-                const double w = r * harmonic_mean(eta[f.lo], eta[f.hi]);
+                const double w = r * face_conductance(true, eta[f.lo], eta[f.hi], true);
                 const bool lo = active(f.lo), hi = active(f.hi);
                 if (lo && hi)
                     pattern_.couple(value, a, f, w);
@@ -61,12 +61,11 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
             }
             const std::size_t c = f.lo;  // a wall: both sides name the inside cell
             if (!active(c)) continue;
-            const double w = 2.0 * r * eta[c];
+            const double w = r * face_conductance(false, eta[c], 0.0, true);
             value[pattern_.diagonal[pattern_.unknown[c]]] += w;
             // Moving walls are those of the domain boundary (embedded walls are at rest).
             const int side = f.kind == kWallBelow ? 0 : 1;
-            const int index = static_cast<int>((c / grid.stride(a)) % grid.n[a]);
-            if (index == (side == 0 ? 0 : grid.n[a] - 1))
+            if (on_domain_boundary(grid, a, f.f))
                 for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }

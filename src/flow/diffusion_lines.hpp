@@ -7,18 +7,13 @@
 // rows. The matrices are M-matrices: positive data give positive solutions.
 #pragma once
 
+#include "flow/diffusion_faces.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/line_solver.hpp"
 
 #include <vector>
 
 namespace granseg {
-
-/// The harmonic mean 2ab/(a+b) of two coefficients (0 if both are 0).
-inline double harmonic_mean(double a, double b) {
-    const double s = a + b;
-    return s > 0.0 ? 2.0 * a * b / s : 0.0;
-}
 
 class DiffusionLines {
 public:
