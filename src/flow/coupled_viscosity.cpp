@@ -72,7 +72,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
     ldlt_.factorize(pattern_.matrix);
     if (ldlt_.info() != Eigen::Success)
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
-    const Eigen::MatrixXd u = solve_columns();
+    const Eigen::MatrixXd u = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells)
         for (int b = 0; b < 3; ++b) {
             state.u[b][c] = u(pattern_.unknown[c], b);
@@ -80,10 +80,15 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         }
 }
 
-Eigen::MatrixXd CoupledViscosity::solve_columns() const {
+Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(rhs_.rows(), rhs_.cols());
+    std::vector<Eigen::Index> columns;  // a zero column solves to zero exactly
     for (Eigen::Index b = 0; b < rhs_.cols(); ++b)
-        if (!rhs_.col(b).isZero(0.0)) x.col(b) = ldlt_.solve(rhs_.col(b));  // a zero column solves to zero exactly
+        if (!rhs_.col(b).isZero(0.0)) columns.push_back(b);
+    // The columns' solves are independent: one per thread.
+    const long n = static_cast<long>(columns.size());
+#pragma omp parallel for schedule(static, 1) if (parallel && n > 1)
+    for (long q = 0; q < n; ++q) x.col(columns[q]) = ldlt_.solve(rhs_.col(columns[q]));
     return x;
 }
 
@@ -92,7 +97,7 @@ void CoupledViscosity::diffuse_change(const FlowMesh& mesh, std::array<std::vect
         const long r = pattern_.unknown[c];
         for (int b = 0; b < 3; ++b) rhs_(r, b) = mass_[r] * du[b][c];
     }
-    const Eigen::MatrixXd w = solve_columns();
+    const Eigen::MatrixXd w = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         if (mass_[r] > 0.0)

@@ -43,8 +43,9 @@ public:
 private:
     using Matrix = Eigen::SparseMatrix<double>;
     void set_up();
-    /// The factor's solution for each column of rhs_; columns of zeros (u_y in an x-z slice) skip the solve.
-    Eigen::MatrixXd solve_columns() const;
+    /// The factor's solution for each column of rhs_, on OpenMP threads if `parallel`; columns of
+    /// zeros (u_y in an x-z slice) skip the solve.
+    Eigen::MatrixXd solve_columns(bool parallel) const;
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
     Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)

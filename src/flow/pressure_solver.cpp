@@ -85,10 +85,13 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
     // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
     // Newton step can reduce (the step rounds away in dp + step).
+    const long cells = static_cast<long>(mesh.inside_cells.size());
     auto evaluate = [&] {
         F_ = laplacian_ * x_ - target;
         double resolution = 0.0;
-        for (std::size_t c : mesh.inside_cells) {
+#pragma omp parallel for reduction(max : resolution) schedule(static) if (mesh.parallel)
+        for (long q = 0; q < cells; ++q) {
+            const std::size_t c = mesh.inside_cells[q];
             const long r = pattern_.unknown[c];
             const VolumeAtPressure v =
                 volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], base[r]);
