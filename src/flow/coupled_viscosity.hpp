@@ -1,5 +1,13 @@
-// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 4): every velocity
-// component u_b solves
+// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 4).
+//
+//   solves      Phi u_new - dt div(eta grad u_new) = Phi u for each velocity component, by one
+//               sparse LDL^T factorisation per step and a back-substitution per component
+//   inputs      Phi, u, eta per cell, dt, the velocities of the domain-boundary walls
+//   outputs     u and Phi u; diffuse_change(): a velocity change diffused by the same factor
+//   invariants  empty cells (Phi <= Phi_vacuum) are identity rows at rest; the matrix is
+//               symmetric positive definite and an M-matrix
+//
+// Every velocity component u_b solves
 //     Phi u_new - dt sum_axis d/dx_a (eta d u_new/dx_a) = Phi u      (eqs. 9-11, stress eta grad u)
 // with the same discretisation as the line solves of flow/viscosity.hpp (face coefficient the
 // harmonic mean of the cells' eta, no-slip walls at h/2 with the wall's velocity on moving walls

@@ -1,5 +1,14 @@
-// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5): find
-// the pressure increments dp per inside cell with
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5).
+//
+//   solves      F(dp) = 0 (below) for the pressure increments dp, by Newton's method with
+//               multilevel-preconditioned conjugate gradients for each Newton step
+//   inputs      p, T, Phi, Phi_rcp, Phi_co per cell; per face the coupling K_f; per cell the
+//               explicit mass change r_c; dp of the last step (the warm start)
+//   outputs     dp per inside cell; the Newton and Krylov counts, the final residual
+//   invariants  Phi(p + dp) < Phi_rcp in every cell (Newton approaches the root from below); a
+//               bed at rest (r = 0 to round-off) keeps dp = 0
+//
+// Find the pressure increments dp per inside cell with
 //     F_c(dp) = Phi(p_c + dp_c; T_c) - Phi_c - r_c + sum_faces K_f (dp_c - dp_nb) = 0,
 // where Phi(p; T) is the inverse equation of state (flow/equation_of_state.hpp), r_c the mass
 // change of the explicit part of the face mass fluxes, and K_f = (dt/h)^2 Phi_donor/Phi_face >= 0
