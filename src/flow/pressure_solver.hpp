@@ -64,9 +64,12 @@ public:
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+    /// dp += the Newton step (below), in p or, where the step lowers p, in Phi.
+    void newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                       const Eigen::VectorXd& step);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
-    Eigen::VectorXd x_, rhs_, slope_, F_;
+    Eigen::VectorXd x_, volume_, slope_, F_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 
