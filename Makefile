@@ -6,7 +6,10 @@
 # Both first check the Debian packages below: as root they are installed, otherwise the one
 # apt-get line to run is printed and make stops with exit status 2.
 #
-# Other targets: all (build only), figures, bench, figures-full, sanitize, clean.
+# Other targets: all (build only), figures, fig7, bench (BENCH=NAME to run one), figures-full,
+# sanitize, clean, and for the pages: docs-figures (redraw the reference figures of
+# docs/figures/), docs-refresh (copy fresh generated tables into docs/generated/ and the pages);
+# docs/checked_pages.md explains both.
 # Everything generated goes to $(BUILD) (default build/), which git ignores.
 
 SHELL := /bin/bash
@@ -57,8 +60,8 @@ BENCH_PNG    := $(BENCH_GP:figures/%.gp=$(BUILD)/figures/%.png)
 FULL_GP      := $(sort $(wildcard figures/full*.gp))
 FULL_PNG     := $(FULL_GP:figures/%.gp=$(BUILD)/figures/%.png)
 
-.PHONY: FORCE all verify test figures bench figures-full sanitize clean deps \
-        run-verification run-bench verify-summary test-run
+.PHONY: FORCE all verify test figures fig7 bench figures-full sanitize clean deps \
+        run-verification run-bench verify-summary test-run docs-figures docs-refresh
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
@@ -167,8 +170,14 @@ $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 
 run-verification: $(VERIFY_RC)
 
+# verify_docs reads what the other programs wrote (their result logs, the data the reference
+# figures were drawn from), so it runs after all of them.
+$(BUILD)/results/verify_docs.rc: $(filter-out $(BUILD)/results/verify_docs.rc,$(VERIFY_RC))
+
 # ---- figures -----------------------------------------------------------------------------------
-# Every figures/*.gp names the programs whose data it plots in a line '# needs: NAME ...'.
+# Every figures/*.gp names the programs whose data it plots in a line '# needs: NAME ...': a
+# verification program, a benchmark (bench_*), or a scene run by make (run_SCENE: one run of
+# verification/scenes/SCENE.toml into $(RUNS)/SCENE, its wall time in $(RUNS)/SCENE.seconds).
 # A PNG is re-rendered only when its script or one of those programs' results is newer.
 $(BUILD)/figures.mk: $(FIG_GP) $(BENCH_GP) $(FULL_GP) Makefile
 	@mkdir -p $(@D)
@@ -178,6 +187,7 @@ $(BUILD)/figures.mk: $(FIG_GP) $(BENCH_GP) $(FULL_GP) Makefile
 	  printf '%s:' "$$png"; \
 	  for n in $$needs; do \
 	    case $$n in bench_*) printf ' $(BUILD)/bench-results/%s.rc' $$n;; \
+	                run_*) printf ' $(RUNS)/%s.seconds' $${n#run_};; \
 	                *) printf ' $(BUILD)/results/%s.rc' $$n;; esac; \
 	  done; echo; \
 	done > $@
@@ -189,7 +199,7 @@ $(BUILD)/figures.mk: $(FIG_GP) $(BENCH_GP) $(FULL_GP) Makefile
 $(BUILD)/figures/%.png: figures/%.gp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
 	@rm -f $@; \
-	if gnuplot -e "datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; outfile='$@.tmp.png'" $< \
+	if gnuplot -e "datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; rundir='$(RUNS)'; outfile='$@.tmp.png'" $< \
 	     > $(BUILD)/figures/$*.log 2>&1 && [ -s $@.tmp.png ]; then \
 	  mv $@.tmp.png $@; echo "figure: $@"; \
 	else \
@@ -197,6 +207,54 @@ $(BUILD)/figures/%.png: figures/%.gp | $(BUILD)/.deps-ok
 	fi
 
 figures: $(FIG_PNG)
+
+# ---- the pages' reference figures and generated tables (docs/checked_pages.md) ----------------
+# The figures the pages show on a fresh clone, committed under docs/figures/: drawn by the same
+# scripts as build/figures/ (with small=1: 800 pixels wide) from the data of the verification
+# programs, which run first if their results are stale; then verify_docs records a fingerprint
+# of the data each was drawn from, by which make verify tells a stale image.
+DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig4b_regions \
+               fig5_region_c_example fig6a_profiles fig6b_closeup fig7b_kinematic \
+               fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic
+
+docs-figures: deps
+	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)
+	@$(MAKE) --no-print-directory $(PAR) -O $(DOC_FIGURES:%=$(BUILD)/figures/%.png)
+	@for f in $(DOC_FIGURES); do \
+	  gnuplot -e "datadir='$(BUILD)/data'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
+	    && mv docs/figures/$$f.png.tmp docs/figures/$$f.png && echo "docs-figures: docs/figures/$$f.png" \
+	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
+	done
+	@$(BUILD)/verification/verify_docs --fingerprint $(DOC_FIGURES)
+
+# Generated tables: a program writes NAME.md into $(BUILD)/data or $(BUILD)/bench-data; this
+# copies every fresh one into docs/generated/NAME.md and into the pages' blocks that show it.
+docs-refresh: $(BUILD)/verification/verify_docs
+	@$(BUILD)/verification/verify_docs --refresh
+
+# ---- scene runs and Fig. 7 at the paper's resolution -------------------------------------------
+# One run of a scene file (a long one: the figure scripts that plot it say '# needs: run_SCENE'),
+# with progress on stderr; the wall time goes to SCENE.seconds, written only if the run succeeds.
+RUNS := $(BUILD)/runs
+$(RUNS)/%.seconds: verification/scenes/%.toml $(CLI)
+	@mkdir -p $(RUNS)
+	@echo "run: $< into $(RUNS)/$* (progress on stderr)"
+	@t0=$$(date +%s.%N); \
+	$(CLI) run $< --output-dir $(RUNS)/$* > $(RUNS)/$*.log || { cat $(RUNS)/$*.log; exit 1; }; \
+	t1=$$(date +%s.%N); awk "BEGIN{printf \"%.0f\n\", $$t1 - $$t0}" > $@
+
+# `make fig7`: the paper's coupled drum (verification/scenes/tumbler.toml, 100 cells per diameter,
+# 25 s, default time stepping) run once, then Fig. 7a-d and the animation from it
+# (figures/full_fig7*.gp); figures-full reuses the run. Prints the run's and the command's wall time.
+FIG7_PNG := $(filter $(BUILD)/figures/full_fig7%,$(FULL_PNG))
+fig7: deps
+	@start=$$(date +%s); \
+	$(MAKE) --no-print-directory $(PAR) $(CLI) && $(MAKE) --no-print-directory $(PAR) $(FIG7_PNG) || exit 1; \
+	for png in $(FIG7_PNG); do [ -s $$png ] || { echo "fig7: $$png was not rendered"; exit 1; }; done; \
+	run=$$(cat $(RUNS)/tumbler.seconds); \
+	if [ $$(stat -c %Y $(RUNS)/tumbler.seconds) -ge $$start ]; then how="this run"; else how="an earlier run, reused"; fi; \
+	echo "fig7: Fig. 7a-d and the animation in $(BUILD)/figures/full_fig7*_tumbler.png (+ .gif) from $(RUNS)/tumbler"; \
+	echo "fig7: the drum run took $$run s wall ($$how); make fig7 took $$(( $$(date +%s) - start )) s"
 
 # ---- the two commands --------------------------------------------------------------------------
 # Keeps going past a program that fails to build, run or render: the summary counts it as failed.
@@ -237,20 +295,30 @@ test-run:
 	exit $$rc
 
 # ---- benchmarks and long studies (not part of verify) ------------------------------------------
+# `make bench` runs every benchmark; `make bench BENCH="bench_a bench_b"` only those, and BENCH_ARGS
+# go to each one's command line (for one benchmark: e.g. BENCH=bench_fig7_convergence
+# BENCH_ARGS="--cells 25,35,50 --explicit-cells 25,35 --t-end 4 --average-from 2", a test in minutes).
+BENCH ?= $(notdir $(BENCH_BIN))
+BENCH_ARGS ?=
+BENCH_RC := $(BENCH:%=$(BUILD)/bench-results/%.rc)
+# The figures of the benchmarks run: the bench*.gp whose '# needs:' line names one of them.
+BENCH_RUN_PNG = $(foreach gp,$(BENCH_GP),$(if $(filter $(BENCH),$(shell sed -n 's/^# needs://p' $(gp))),$(gp:figures/%.gp=$(BUILD)/figures/%.png)))
+
 $(BUILD)/bench-results/%.rc: $(BUILD)/bench/% $(CLI)
 	@mkdir -p $(@D) $(BUILD)/bench-data
-	@$< --data $(BUILD)/bench-data 2>&1 | tee $(BUILD)/bench-results/$*.log; echo $${PIPESTATUS[0]} > $@
+	@$< --data $(BUILD)/bench-data $(BENCH_ARGS) 2>&1 | tee $(BUILD)/bench-results/$*.log; echo $${PIPESTATUS[0]} > $@
 
-run-bench: $(BENCH_BIN:$(BUILD)/bench/%=$(BUILD)/bench-results/%.rc)
+run-bench: $(BENCH_RC)
 
 # Benchmarks run one after another: timings taken while another benchmark runs are worthless.
 bench: deps
-	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH_BIN)
-	@rm -f $(BUILD)/bench-results/*.rc
+	@$(if $(filter-out $(notdir $(BENCH_BIN)),$(BENCH)),echo "bench: BENCH: no benchmark $(filter-out $(notdir $(BENCH_BIN)),$(BENCH)) (allowed: $(notdir $(BENCH_BIN)))"; exit 2,true)
+	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH:%=$(BUILD)/bench/%)
+	@rm -f $(BENCH_RC)
 	@$(MAKE) --no-print-directory -j1 run-bench
-	@$(MAKE) --no-print-directory $(PAR) $(BENCH_PNG)
+	@$(MAKE) --no-print-directory $(PAR) $(BENCH_RUN_PNG)
 
-# One job at a time: the full figures may first run two benchmarks (bench_tumbler, bench_drum_angle),
+# One job at a time: the full figures may first run the Fig. 7 drum (make fig7) and bench_drum_angle,
 # whose timings are worthless if they run side by side; rendering the PNGs takes seconds.
 figures-full: deps
 	@$(if $(FULL_PNG),$(MAKE) --no-print-directory -j1 $(FULL_PNG),echo "figures-full: no long studies yet (figures/full*.gp)")

@@ -1,8 +1,10 @@
 # Fig. 3 of the paper: integral curves through a critical state Q* and the transition curve Gamma.
 # needs: verify_table1_figures
+# reads: fig3_curves.dat
 # Data: fig3_curves.dat (block 0: standing-wave curve f = f(Q*); block 1: wave curve Phi = Phi*;
 #       blocks 2..: curves f = const, one block per branch), S = T = 1.
-set terminal pngcairo size 900,800 font "Sans,12" noenhanced
+width = 900; height = 800; fontsize = 12
+load 'figures/png_terminal.gnuplot'
 set output outfile
 set title "Fig. 3: integral curves through the critical state Q* = (0.25, 0.5)"
 set xlabel "phi (small particles)"

@@ -1,9 +1,11 @@
 # Fig. 5 of the paper: an exact solution with Q_R in region C (case 3), Q_L = (0.1, 0.5),
 # Q_R = (0.3, 0.8), S = T = 1: rarefaction Q_L -> Q*, standing wave Q* -> Q-check_R, shock to Q_R.
 # needs: verify_table1_figures
+# reads: fig5_states.dat fig5_path.dat fig5_flux_curves.dat fig5_profile.dat
 # Data: fig5_states.dat, fig5_path.dat (the waves in state space), fig5_flux_curves.dat,
 #       fig5_profile.dat (phi and Phi against xi = z/t).
-set terminal pngcairo size 1500,560 font "Sans,11" noenhanced
+width = 1500; height = 560; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 set multiplot layout 1,3 title "Fig. 5: exact solution for Q_R in region C (case 3): rarefaction, standing wave, shock; flux f_L^min"
 set grid lc rgb "#eeeeee"

@@ -1,10 +1,12 @@
 # Fig. 6a: the 1-D segregation column of Sect. 4.1 at t = 0.75, N = 50 cells, every scheme.
 # needs: verify_overshoot
+# reads: fig6_profiles.dat
 # Data: fig6_profiles.dat (columns z Phi T phi0, then one per row of the scheme table:
 #       modified_godunov modified_godunov_2 classic_upwind classic_godunov rusanov);
 #       profiles Phi, T: docs/assumptions.md G4.
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig6a_profiles.gp
-set terminal pngcairo size 1100,750 font "Sans,12" noenhanced
+width = 1100; height = 750; fontsize = 12
+load 'figures/png_terminal.gnuplot'
 set output outfile
 f = datadir.'/fig6_profiles.dat'
 set title "Fig. 6a: small particles phi(z) at t = 0.75 (eq. 66, S = 1, 50 cells, CFL 0.9)"

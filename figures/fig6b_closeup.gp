@@ -1,11 +1,13 @@
 # Fig. 6b: close-up of the bottom layer, where the classic schemes push phi above Phi, and the
 # size of that overshoot against the number of cells.
 # needs: verify_overshoot
+# reads: fig6_profiles.dat fig6_overshoot.dat
 # Data: fig6_profiles.dat (N = 50, t = 0.75) and fig6_overshoot.dat (max over the run of
 #       phi - Phi for N = 50 .. 3200); one column per row of the scheme table, in its order
 #       (modified_godunov modified_godunov_2 classic_upwind classic_godunov rusanov).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig6b_closeup.gp
-set terminal pngcairo size 1400,650 font "Sans,12" noenhanced
+width = 1400; height = 650; fontsize = 12
+load 'figures/png_terminal.gnuplot'
 set output outfile
 f = datadir.'/fig6_profiles.dat'
 g = datadir.'/fig6_overshoot.dat'

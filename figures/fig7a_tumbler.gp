@@ -2,7 +2,7 @@
 # needs: verify_tumbler
 # Data: DIR/initial_lab.dat (x z Phi phi_hat u_x u_z T ds_x ds_z inside urel_x urel_z a_x a_z; one
 #       block per row), DIR = datadir/tumbler (verify_tumbler, 32 cells per diameter) unless the
-#       caller sets dir (figures/full_fig7a_tumbler.gp: bench_tumbler, 100 cells per diameter).
+#       caller sets dir (figures/full_fig7a_tumbler.gp: make fig7, 100 cells per diameter).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7a_tumbler.gp
 if (!exists("dir")) dir = datadir.'/tumbler'
 f = dir.'/initial_lab.dat'

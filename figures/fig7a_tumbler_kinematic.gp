@@ -1,9 +1,11 @@
 # Fig. 7a: the initial composition phi_hat in the kinematic drum (perfectly mixed, 0.5), inertial frame.
 # needs: verify_tumbler_kinematic
+# reads: tumbler_initial.dat tumbler_outline.dat
 # Data: tumbler_initial.dat (bed cells: x z phi_hat, h = 1 mm), tumbler_outline.dat (wall, surface,
 #       layer bottom), written by verify_tumbler_kinematic from figures/tumbler_kinematic.toml.
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7a_tumbler_kinematic.gp
-set terminal pngcairo size 800,760 font "Sans,11" noenhanced
+width = 800; height = 760; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 cells = datadir.'/tumbler_initial.dat'
 outline = datadir.'/tumbler_outline.dat'

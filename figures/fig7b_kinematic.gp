@@ -1,9 +1,11 @@
 # Fig. 7b, first version: the kinematic rolling-drum flow with the segregation direction d_s.
 # needs: verify_kinematic_flow
+# reads: kinematic_cells.dat kinematic_outline.dat
 # Data: kinematic_cells.dat (bed cells: x z in_layer ux uz urel_x urel_z ds_x ds_z speed angle_deg,
 #       inertial frame, 100 cells per diameter) and kinematic_outline.dat (wall, surface, layer bottom).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7b_kinematic.gp
-set terminal pngcairo size 1700,700 font "Sans,11" noenhanced
+width = 1700; height = 700; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 cells = datadir.'/kinematic_cells.dat'
 outline = datadir.'/kinematic_outline.dat'

@@ -1,10 +1,12 @@
 # Fig. 7b: close-up of the surface region of the kinematic drum after 25 s: phi_hat (colour), the
 # inertial velocity (arrows, every 2nd cell) and the segregation direction d_s (black, layer cells).
 # needs: verify_tumbler_kinematic
+# reads: tumbler_final.dat tumbler_flow.dat tumbler_outline.dat
 # Data: tumbler_final.dat (x z phi_hat), tumbler_flow.dat (x z in_layer ux uz ds_x ds_z T a_x a_z),
 #       tumbler_outline.dat.
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7b_tumbler_kinematic.gp
-set terminal pngcairo size 1300,800 font "Sans,11" noenhanced
+width = 1300; height = 800; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 cells = datadir.'/tumbler_final.dat'
 flow = datadir.'/tumbler_flow.dat'

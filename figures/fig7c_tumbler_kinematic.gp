@@ -1,10 +1,12 @@
 # Fig. 7c: phi_hat after 25 s in the kinematic drum (inertial frame), with the radial profile and
 # the segregation index over time.
 # needs: verify_tumbler_kinematic
+# reads: tumbler_final.dat tumbler_outline.dat tumbler_shells.dat tumbler_metrics.dat
 # Data: tumbler_final.dat (x z phi_hat), tumbler_outline.dat, tumbler_shells.dat (r phi_hat_initial
 #       phi_hat_final cells), tumbler_metrics.dat (t index core ring periphery mean core_deviation).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7c_tumbler_kinematic.gp
-set terminal pngcairo size 1500,720 font "Sans,11" noenhanced
+width = 1500; height = 720; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 cells = datadir.'/tumbler_final.dat'
 outline = datadir.'/tumbler_outline.dat'

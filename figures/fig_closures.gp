@@ -1,9 +1,11 @@
 # Closures of Sect. 2.1 against Phi for three mixtures, and the packing fits.
 # needs: verify_closures
+# reads: closures_vs_Phi.dat packing_table.dat packing_fit.dat
 # Data: closures_vs_Phi.dat (blocks phi_hat = 0, 0.4, 1 at T = 1e-4 m^2/s^2),
 #       packing_table.dat (substitute data) and packing_fit.dat (degree-4 GSL fits).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig_closures.gp
-set terminal pngcairo size 1400,1000 font "Sans,11" noenhanced
+width = 1400; height = 1000; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 set multiplot layout 2,2 title "Sect. 2.1 closures (substitute material, docs/assumptions.md)"
 set key top left

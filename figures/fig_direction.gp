@@ -1,10 +1,12 @@
 # The Sect. 2.3 direction procedure: stability near a repeated eigenvalue, and the tilt of d_s
 # when shear and extension combine.
 # needs: verify_direction verify_direction_stability
+# reads: direction_stability.dat direction_tilt.dat
 # Data: direction_stability.dat (relative_gap err_iterative err_closed_form bound) and
 #       direction_tilt.dat (e_over_gamma tilt_deg tilt_exact_deg).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig_direction.gp
-set terminal pngcairo size 1400,560 font "Sans,11" noenhanced
+width = 1400; height = 560; fontsize = 11
+load 'figures/png_terminal.gnuplot'
 set output outfile
 set multiplot layout 1,2 title "Sect. 2.3 segregation direction d_s"
 set grid

@@ -1,5 +1,5 @@
-# The figure of figures/fig7b_tumbler.gp at 100 cells per diameter (make figures-full).
-# needs: bench_tumbler
-# Data: the coupled drum of verification/scenes/tumbler.toml, run by bench_tumbler into benchdir/tumbler.
-dir = benchdir.'/tumbler'
+# The figure of figures/fig7b_tumbler.gp at 100 cells per diameter (make fig7, make figures-full).
+# needs: run_tumbler
+# Data: the coupled drum of verification/scenes/tumbler.toml, run by make into rundir/tumbler.
+dir = rundir.'/tumbler'
 load 'figures/fig7b_tumbler.gp'

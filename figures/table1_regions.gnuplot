@@ -1,7 +1,8 @@
 # Shared by fig4a_regions.gp and fig4b_regions.gp (loaded after they set `name`, `QL_phi`,
 # `QL_Phi`, `panel`): the Table 1 regions of Q_R = (phi_R, Phi_R) for a fixed Q_L, from the
 # classifier (verify_table1_figures), drawn as an image with one colour per case.
-set terminal pngcairo size 900,820 font "Sans,12" noenhanced
+width = 900; height = 820; fontsize = 12
+load 'figures/png_terminal.gnuplot'
 set output outfile
 set title sprintf("Fig. 4%s: regions of Q_R for Q_L = (%g, %g), S = T = 1", panel, QL_phi, QL_Phi)
 set xlabel "phi_R"

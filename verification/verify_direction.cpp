@@ -1,12 +1,12 @@
-// Verification of the Sect. 2.3 direction procedure on flows whose answer is known (issue 5, 3a-b).
+// Verification of the Sect. 2.3 direction procedure on flows whose answer is known.
 //
-// 3a. Simple shear grad0 = gamma e_x e_z^T, u0 = U e_x, seen in 2000 random rotations R:
+// invariance: simple shear grad0 = gamma e_x e_z^T, u0 = U e_x, seen in 2000 random rotations R:
 //     d_s = +/- R e_z (the shear-plane normal) and P = R e_z e_z^T R^T to 1e-12; gamma_dot (eq. 43)
 //     and kappa_max - kappa_min equal gamma. With a random added rigid rotation (grad + W, u the
 //     velocity relative to the rotating frame) d_s is unchanged, and gamma_dot follows the
 //     hand-derived |grad0 + W'|_F: eq. (43) uses the full gradient. Using the inertial velocity
 //     instead of the relative one is shown (note only) to pick the wrong plane.
-// 3b. Flows with a documented outcome (docs/sect2.3_direction.md, docs/assumptions.md D1-D5):
+// documented flows: flows with a documented outcome (docs/sect2.3_direction.md, docs/assumptions.md D1-D5):
 //     planar extension (the 45-degree diagonals; at the stagnation point: undetermined),
 //     axisymmetric extension (repeated eigenvalue), isotropic expansion and pure rotation (no shear),
 //     shear plus extension (d_s tilted by (1/2) atan(2e/gamma) from the shear normal, exact formula),
@@ -78,13 +78,13 @@ void check_rotated_simple_shear(CheckTable& t) {
         const Vector3d inertial = u + w.cross(verify::random_normal_vector(rng).normalized());
         wrong_inertial += direction_error(segregation_direction(grad + verify::spin_matrix(w), inertial).d_s, normal) > 0.5;
     }
-    t.note("3a. simple shear in " + std::to_string(kRotations) + " random rotations R");
+    t.note("invariance: simple shear in " + std::to_string(kRotations) + " random rotations R");
     t.at_most("max |d_s -/+ R e_z|", worst_d, kDirectionTol);
     t.at_most("max |P - R e_z e_z^T R^T| (entries)", worst_P, kDirectionTol);
     t.at_most("max |gamma_dot/gamma - 1| (eq. 43, invariant)", worst_gamma, kNormTol);
     t.at_most("max |(kappa_max - kappa_min)/gamma - 1|", worst_shear, kNormTol);
     t.count("status != ok, count", not_ok, 0);
-    t.note("3a. with an added rigid rotation W (|w| <= 5 gamma), u relative to the rotating frame");
+    t.note("invariance: with an added rigid rotation W (|w| <= 5 gamma), u relative to the rotating frame");
     t.at_most("max |d_s -/+ R e_z| with spin", worst_d_spin, kDirectionTol);
     t.at_most("max rel. error of gamma_dot vs |grad0 + W'|_F (full gradient)", worst_gamma_spin, kNormTol);
     t.at_most("max |(kappa_max - kappa_min)/gamma - 1| with spin", worst_shear_spin, kNormTol);
@@ -158,7 +158,7 @@ void check_chute(CheckTable& t) {
 
 /// 3b: every flow of the header comment.
 void check_documented_flows(CheckTable& t, const verify::ProgramOptions& options) {
-    t.note("3b. flows with a documented outcome");
+    t.note("documented flows: flows with a documented outcome");
     const double e = 1.7, gamma = 2.385;
     Matrix3d planar = Matrix3d::Zero();
     planar(0, 0) = e, planar(2, 2) = -e;  // u = e (x, 0, -z)
@@ -194,7 +194,7 @@ void check_documented_flows(CheckTable& t, const verify::ProgramOptions& options
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    CheckTable table("Sect. 2.3 segregation direction: invariance and documented flows (3a, 3b)");
+    CheckTable table("Sect. 2.3 segregation direction: invariance and documented flows");
     check_rotated_simple_shear(table);
     check_documented_flows(table, options);
     return table.finish();

@@ -1,10 +1,10 @@
-// Verification of the Sect. 2.3 sign choice and of the eigen solvers behind it (issue 5, 3c-d).
+// Verification of the Sect. 2.3 sign choice and of the eigen solvers behind it.
 //
-// 3c. For 20000 random (grad, u) with Gaussian entries, the two candidates are rebuilt from an
+// sign choice: for 20000 random (grad, u) with Gaussian entries, the two candidates are rebuilt from an
 //     independent implementation (GSL gsl_eigen_symmv: Householder tridiagonalisation and
 //     implicit symmetric QR in another library): d_s must be one of them and the one with the smaller |d . u|. Flipping the sign of
 //     u, of k_max or of k_min must leave P = d_s d_s^T unchanged.
-// 3d. Eigen's iterative solver (compute) and closed form (computeDirect) agree on random spectra
+// eigen solvers: Eigen's iterative solver (compute) and closed form (computeDirect) agree on random spectra
 //     with relative gaps >= 0.1 (eigenvalues, residuals, d_s). Near a repeated eigenvalue, with
 //     kappa^s = Q diag(-1, 1 - 2g, 1) Q^T (relative gap g between kappa_max and kappa_mid; and the
 //     mirror case at kappa_min), d_s is compared with the exact (q_max + q_min)/sqrt(2): the
@@ -115,7 +115,7 @@ void check_sign_choice(CheckTable& t) {
         worst_orthogonality = std::max(worst_orthogonality, (std::fabs(r.d_s.dot(u)) - std::min(along_plus, along_minus)) / u.norm());
     }
     gsl_eigen_symmv_free(ws);
-    t.note("3c. sign choice on " + std::to_string(samples) + " random (grad, u); " + std::to_string(compared) +
+    t.note("sign choice: " + std::to_string(samples) + " random (grad, u); " + std::to_string(compared) +
            " compared with GSL (" + std::to_string(close_gap) + " with relative gap < 1e-3, " + std::to_string(near_tie) +
            " near-ties left out)");
     t.at_most("max distance of d_s from the nearer GSL candidate", worst_candidate, kCandidateTol);
@@ -147,7 +147,7 @@ void check_solver_agreement(CheckTable& t) {
                                        (S * r->eigen.k_min - r->eigen.kappa_min * r->eigen.k_min).norm() / norm});
         }
     }
-    t.note("3d. compute vs computeDirect on 5000 spectra with relative gaps >= 0.1");
+    t.note("eigen solvers: compute vs computeDirect on 5000 spectra with relative gaps >= 0.1");
     t.at_most("max |kappa_it - kappa_direct| (extreme eigenvalues, spread ~2)", worst_value, kSolverAgreementTol);
     t.at_most("max |d_s(it) -/+ d_s(direct)|", worst_d, kSolverAgreementTol);
     t.at_most("max residual |S k - kappa k|/|S| (both solvers)", worst_residual, kResidualTol);
@@ -190,7 +190,7 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
         curve.row({g, err_it, err_cf, kStabilityConstant * DBL_EPSILON / g});
     }
     verify::write_data(options, "direction_stability.dat", curve);
-    t.note("3d. near a repeated extreme eigenvalue, relative gap g = 1e-1 .. 1e-15");
+    t.note("eigen solvers: near a repeated extreme eigenvalue, relative gap g = 1e-1 .. 1e-15");
     t.at_most("iterative: max over g of |d_s error| g/eps (bound C)", worst_ratio, kStabilityConstant);
     t.note("  closed form: max |d_s error| g/eps = " + verify::format(worst_ratio_direct) +
            ", error ~ g^" + verify::format(fit.slope()) + " (reported, not bounded: use the iterative solver)");
@@ -201,7 +201,7 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    CheckTable table("Sect. 2.3 sign choice and eigen solvers (3c, 3d)");
+    CheckTable table("Sect. 2.3 sign choice and eigen solvers");
     check_sign_choice(table);
     check_solver_agreement(table);
     check_near_repeated(table, options);

@@ -41,7 +41,7 @@ constexpr double kMargin = 0.05;
 // root: round-off, kRoundOff per unit of |a|, times 2 (for |a| <= 2).
 constexpr double kFluxTol = 2 * kRoundOff;
 
-/// Table 1 read literally for T_L = T_R (../shared/paper/NOTES.md), with Phi~ = 4 phi_L (Phi_L -
+/// Table 1 read literally for T_L = T_R (docs/paper_notes.md, section 2), with Phi~ = 4 phi_L (Phi_L -
 /// phi_L)/Phi_L. Returns a bit mask of the rows whose conditions hold (bit k-1 for case k).
 int literal_table1_rows(const FluxSide& L, const FluxSide& R) {
     const double fL = flux_of(L), fR = flux_of(R), f_star = -0.25 * L.a * L.Phi;  // f(Q*)
@@ -128,6 +128,6 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_over_families(argc, argv, "Table 1: exact Riemann solutions of system (52), case by case (item 4a, 4d)",
+    return run_over_families(argc, argv, "Table 1: exact Riemann solutions of system (52), case by case, four coefficient families",
                              20200045, check_family);
 }

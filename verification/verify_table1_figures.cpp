@@ -1,7 +1,7 @@
 // Data and checks for Figs. 3-5 of Sect. 3.2 (S = 1, T = 1 on both sides, a = 1).
 //   Fig. 3: integral curves through the critical state Q* = (0.25, 0.5): the wave curve
 //     Phi = Phi* (eigenvector r_1) and the standing-wave curve f = f(Q*) (r_0), with Gamma and a
-//     family of curves f = const. Checked: eqs. (54)-(56) as restored in NOTES.md against
+//     family of curves f = const. Checked: eqs. (54)-(56) as restored in docs/paper_notes.md against
 //     finite differences of the code's f (DF r_0 = 0, DF r_1 = lambda_1 r_1), and the computed
 //     curve f = f(Q*) against f and against the slope r_0 gives.
 //   Fig. 4a/4b: regions A-F for Q_L = (0.15, 0.5) (left of Gamma) and G-J for Q_L = (0.4, 0.5)

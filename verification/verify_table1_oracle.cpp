@@ -242,6 +242,6 @@ void check_staggered(CheckTable& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_over_families(argc, argv, "Table 1: fine-grid oracle with ramps of shrinking width (items 4b, 4d)",
+    return run_over_families(argc, argv, "Table 1: fine-grid oracle with ramps of shrinking width, four coefficient families",
                              20200047, check_family, check_staggered);
 }

@@ -21,8 +21,8 @@
 // d_s is signed so that its component of largest magnitude is positive.
 //
 // WHICH u AND grad: the velocity relative to the walls that drive the flow. In the rotating drum
-// that is the rotating-frame velocity u_rel = u - Omega x x (docs/model notes, Sect. 3.4 of
-// research/model.md). kappa^s is the same in every frame; u and gamma_dot = sqrt(grad : grad)
+// that is the rotating-frame velocity u_rel = u - Omega x x (docs/assumptions.md D3).
+// kappa^s is the same in every frame; u and gamma_dot = sqrt(grad : grad)
 // (eq. 43, full gradient) are not, so pass the rotating-frame u and grad.
 //
 // Undefined or ill-conditioned cases (docs/assumptions.md D1-D4), reported by `status`:

@@ -50,6 +50,12 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);
     s.packing_feedback = scene.flag("coupling", "packing_feedback", s.packing_feedback);
     s.bulk_cfl = scene.number("coupling", "bulk_cfl", Range::left_open(0, 1), s.bulk_cfl);
+    if (scene.has("coupling", "mixture")) {
+        if (s.packing_feedback)
+            scene.fail("coupling", "mixture", "a fixed mixture with packing_feedback = true",
+                       "only with packing_feedback = false (C3)");
+        s.mixture = scene.number("coupling", "mixture", Range::closed(0, 1));
+    }
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     s.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
 

@@ -61,16 +61,22 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
 
     DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
                        "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
-                       "substeps", "dt"});
+                       "substeps", "dt", "layer_thickness", "axis", "packing_contrast"});
     history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
                     "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
                     format_number(level) + "; surface angle: fit of the Phi = " + format_number(level) +
-                    " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) + " m/s");
-    TimeAverage angle(options.run.angle_from);
+                    " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) +
+                    " m/s; layer_thickness: area of the flowing bed over the surface's chord (m); axis: small-particle "
+                    "share within " + format_number(kAxisShare) + " D of the axis; packing_contrast: Fig. 7d "
+                    "(packing_contrast.hpp)");
+    PackingContrastOptions contrast_options;
+    contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
+    TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
     BoundsMonitor bounds;
-    double small_change = 0, large_change = 0, surface_angle = 0;
+    double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
     PatternMetrics metrics;
+    PackingContrast contrast;
     int snapshot = 0, frame = 0;
     double next_history = 0.0, next_snapshot = 0.0, next_frame = 0.0;
     const double frame_every = options.frames > 0 ? t_end / options.frames : INFINITY;
@@ -90,11 +96,16 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                      " (relative to all material) by t = " + format_number(flow.time()) + " s");
             const DrumState d = drum_state(flow, level, 0.8 * drum.radius(), v_flow);
             surface_angle = d.surface_angle_deg;
+            const double thickness = flowing_layer_thickness(d, drum.radius());
             angle.add(flow.time(), surface_angle);
+            layer.add(flow.time(), thickness);
             metrics = pattern_metrics(grid, tumbler.phi(), flow.Phi(), options.regions, hat0);
+            axis = disc_share(grid, tumbler.phi(), flow.Phi(), kAxisShare * drum.diameter, level);
+            contrast = packing_contrast(tumbler, surface_angle, contrast_options);
             history.row({flow.time(), static_cast<double>(flow.steps()), amount[0], amount[1], metrics.index, surface_angle,
                          metrics.ring, metrics.periphery, metrics.core, small_change, large_change, d.flowing_fraction,
-                         d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt()});
+                         d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt(), thickness, axis,
+                         contrast.contrast});
         }
         if (options.run.vtk && due(next_snapshot)) {
             next_snapshot += options.run.snapshot_every;
@@ -114,10 +125,6 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
         progress.update(flow.time());
     }
     progress.finish();
-
-    PackingContrastOptions contrast_options;
-    contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
-    const PackingContrast contrast = packing_contrast(tumbler, surface_angle, contrast_options);
     std::vector<std::string> columns{"t_end", "steps", "substeps", "segregation_steps", "angle_mean_deg", "angle_std_deg",
                                      "angle_samples", "mass_small_change", "mass_large_change", "segregation_index", "ring",
                                      "periphery", "core", "initial_mixture", "packing_feedback", "packing_contrast",
@@ -132,11 +139,15 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
                                static_cast<double>(inside_cells(grid))};
     append_flow_counts(flow.counters(), columns, values);
+    for (const char* c : {"layer_mean", "layer_std", "axis"}) columns.push_back(c);
+    for (double v : {layer.mean(), layer.std_dev(), axis}) values.push_back(v);
     DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
                     " s; pattern metrics at t_end (regions r_core " + format_number(options.regions.r_core) + ", r_ring " +
                     format_number(options.regions.r_ring) + ", r_periphery " + format_number(options.regions.r_periphery) +
-                    " m); packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
+                    " m); layer: mean and standard deviation of the flowing layer's thickness (m) over the angle's "
+                    "samples; axis: small-particle share within " + format_number(kAxisShare) +
+                    " D of the axis at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
                     " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
                     "transport, segregation sub-steps, closures from phi_hat); flow counts: flow_output.hpp append_flow_counts");
     summary.row(values);

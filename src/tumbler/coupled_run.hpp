@@ -37,10 +37,17 @@ PatternRegions coupled_regions(const DrumSpec& drum, double bed_level);
 /// 8 mm in the Sect. 4.2 drum, the kinematic drum's delta0 (assumption K2; C4).
 constexpr double kLayerShare = 0.08;
 
+/// Radius, as a share of the diameter, of the region around the axis whose small-particle share
+/// (mass-weighted phi_hat of its bed cells) history.dat and summary.dat report as `axis`: the
+/// innermost part of the core, which the core metric averages with the rest of it.
+constexpr double kAxisShare = 0.05;
+
 /// Observer called after every coupled step (for checks beyond the built-in invariants).
 using CoupledStepObserver = std::function<void(const CoupledTumbler& tumbler)>;
 
-/// Runs `tumbler` from t = 0 to options.run.t_end and returns its files: history.dat, summary.dat,
+/// Runs `tumbler` from t = 0 to options.run.t_end and returns its files: history.dat, summary.dat
+/// (the angle and the flowing layer's thickness averaged over t >= angle_from, the pattern metrics,
+/// axis share and Fig. 7d contrast at t_end),
 /// initial_lab.dat and fields_lab.dat (coupled_field_table at t = 0 and t_end), frames/frame_NNN.dat,
 /// vtk/tumbler_NNNN.vtk.
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,

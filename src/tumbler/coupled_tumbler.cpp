@@ -50,6 +50,12 @@ CoupledTumbler::InitialMixture CoupledTumbler::initial_mixture(const CoupledTumb
                 m.mean += fill[c] * v, filled += fill[c];  // (assumption C3)
             }
     m.mean /= filled;
+    if (!std::isnan(setup.mixture)) {
+        if (!(setup.mixture >= 0.0 && setup.mixture <= 1.0))
+            throw InputError("tumbler: mixture = " + format_number(setup.mixture) + " outside [0, 1]");
+        if (setup.packing_feedback) throw InputError("tumbler: a fixed mixture needs packing feedback off (C3)");
+        m.mean = setup.mixture;
+    }
     return m;
 }
 

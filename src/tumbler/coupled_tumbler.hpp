@@ -61,6 +61,9 @@ struct CoupledTumblerSetup {
     double bulk_cfl = 0.9;           // the bulk flow's share of the sub-step interval (C1)
     double Phi_min = 0.05;           // no segregation in cells with Phi below this (C2)
     bool packing_feedback = true;    // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
+    /// Without packing feedback: the phi_hat whose Phi_rcp, Phi_co the closures keep; NaN: the
+    /// initial bed's mean (C3). Lets a tracer (S = 0) ride on the flow of another mixture.
+    double mixture = std::numeric_limits<double>::quiet_NaN();
     std::function<double(double x, double z)> phi_hat0 = [](double, double) { return 0.5; };  // lab frame at t = 0
 };
 
@@ -72,7 +75,8 @@ struct CoupledTimers {
 class CoupledTumbler {
 public:
     /// The drum at rest with the bed of the initial mixture (assumptions F6, C3) and
-    /// phi = phi_hat0 Phi. Throws InputError for phi_hat0 outside [0, 1] in a bed cell,
+    /// phi = phi_hat0 Phi. Throws InputError for phi_hat0 outside [0, 1] in a bed cell, for a
+    /// mixture outside [0, 1] or given with packing feedback,
     /// InvariantError if the bed is packed beyond Phi_rcp(phi_hat0) somewhere (packing feedback).
     explicit CoupledTumbler(const CoupledTumblerSetup& setup);
 
@@ -91,7 +95,8 @@ public:
     const std::vector<double>& phi() const { return phi_; }
     /// phi_hat = phi/Phi per cell (0 where Phi = 0).
     std::vector<double> phi_hat() const;
-    /// The small-particle share that sets Phi_rcp, Phi_co without packing feedback (C3).
+    /// The small-particle share that sets Phi_rcp, Phi_co without packing feedback (C3): the setup's
+    /// mixture if given, else the initial bed's mean.
     double initial_mixture() const { return initial_.mean; }
     /// The fields of the last segregation sub-step: Phi, a = S^sl per axis, and d_s per axis
     /// (drum frame, sign-normalised; 0 where there is no segregation).
@@ -117,7 +122,8 @@ private:
     /// than kBoundRoundOff times the cell's larger Phi (before or after the step).
     void clip_bulk_round_off();
 
-    /// phi_hat0 at the cells below the flat initial surface (0 elsewhere) and their mean (C3).
+    /// phi_hat0 at the cells below the flat initial surface (0 elsewhere) and their mean (C3), or the
+    /// setup's mixture in its place if given.
     struct InitialMixture {
         std::vector<double> phi_hat;
         double mean;

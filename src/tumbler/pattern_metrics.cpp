@@ -46,6 +46,15 @@ PatternRegions drum_regions(double d, double delta0, double R) {
     return r;
 }
 
+double disc_share(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi, double radius,
+                  double bed_level) {
+    double small = 0, all = 0;
+    for_each_bed_cell(grid, [&](const BedCell& b) {
+        if (Phi[b.c] > bed_level && std::hypot(b.x, b.z) < radius) small += phi[b.c], all += Phi[b.c];
+    });
+    return all > 0.0 ? small / all : std::numeric_limits<double>::quiet_NaN();
+}
+
 ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                            double radius, int shells, double bed_level) {
     if (shells < 1 || !(radius > 0.0)) throw InputError("shell profile: needs shells >= 1 and radius > 0");

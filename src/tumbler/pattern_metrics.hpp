@@ -41,6 +41,11 @@ struct PatternMetrics {
 PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
                                const PatternRegions& regions, const std::vector<double>& phi_hat_initial);
 
+/// Mass-weighted phi_hat, sum(phi)/sum(Phi), of the bed cells (Phi > bed_level) whose centres lie
+/// within `radius` of the drum centre (NaN if there are none).
+double disc_share(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi, double radius,
+                  double bed_level);
+
 /// phi_hat averaged (mass-weighted) over the bed cells in each of `shells` equal radial shells of
 /// [0, radius]; the mean radius of the cells of each shell in `r` (NaN where a shell is empty).
 struct ShellProfile {

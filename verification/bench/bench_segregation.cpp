@@ -11,6 +11,9 @@
 //
 // Writes bench_segregation.dat (one row per problem, scheme, N) and prints, per problem and
 // scheme, the CPU time needed for L1 error 1e-3 (log-log interpolation between resolutions).
+// Writes bench_segregation.md, the table docs/sect4.1_overshoot.md shows (docs/checked_pages.md,
+// "Generated tables"): per scheme, that CPU time on the two-shock batch and the median rate of
+// cell updates (one per cell and Runge-Kutta stage) on the Fig. 6 column for N >= 800.
 //
 // Run: build/bench/bench_segregation [--data DIR]   (several minutes; `make bench`)
 #include "harness/gray_thornton.hpp"
@@ -33,6 +36,7 @@ namespace {
 constexpr int kRepetitions = 5;
 constexpr int kReferenceCells = 102400;
 constexpr double kTarget = 1e-3;  // the L1 error whose cost the summary quotes
+constexpr int kRateFromCells = 800;  // the rate of cell updates is the median over N >= this
 
 const std::vector<int> kCells = {50, 100, 200, 400, 800, 1600, 3200, 6400, 12800};
 const std::vector<SegregationScheme> kSchemes = {SegregationScheme::modified_godunov, SegregationScheme::modified_godunov_2,
@@ -99,6 +103,25 @@ std::vector<Problem> problems() {
     };
 }
 
+/// One row of the markdown table: a scheme's cost to kTarget on the two-shock batch and its rate.
+struct MarkdownRow {
+    double seconds_to_target = NAN;
+    std::vector<double> fig6_rates;  // million cell updates per second, N >= kRateFromCells
+};
+
+/// The markdown table of bench_segregation.md.
+std::string markdown_table(const std::vector<MarkdownRow>& rows) {
+    std::string out = "| scheme | CPU time to L1 = 1e-3, two-shock batch | million cell updates per second, Fig. 6 column, N >= " +
+                      std::to_string(kRateFromCells) + " |\n|---|---|---|\n";
+    for (std::size_t s = 0; s < kSchemes.size(); ++s) {
+        char line[200];
+        std::snprintf(line, sizeof line, "| %s | %.2f ms | %.0f |\n", scheme_name(kSchemes[s]).c_str(),
+                      1e3 * rows[s].seconds_to_target, median(rows[s].fig6_rates));
+        out += line;
+    }
+    return out;
+}
+
 /// CPU time at which the error curve (log-log linear between resolutions) reaches kTarget; NaN
 /// if it never does.
 double time_to_target(const std::vector<double>& error, const std::vector<double>& seconds) {
@@ -122,6 +145,7 @@ int main(int argc, char** argv) {
     std::printf("%-10s %-19s %6s %11s %11s %11s %9s\n", "problem", "scheme", "N", "L1", "cpu median", "(min..max)",
                 "Mupd/s");
     std::vector<std::string> summary;
+    std::vector<MarkdownRow> markdown(kSchemes.size());
     int p = 0;
     for (const Problem& problem : problems()) {
         for (std::size_t s = 0; s < kSchemes.size(); ++s) {
@@ -142,6 +166,7 @@ int main(int argc, char** argv) {
                 const double error = l1_distance(run.phi, reference, 1.0 / N);
                 errors.push_back(error);
                 medians.push_back(median);
+                if (problem.name == "fig6" && N >= kRateFromCells) markdown[s].fig6_rates.push_back(rate);
                 table.row({static_cast<double>(p), static_cast<double>(s), static_cast<double>(N), error, median,
                            seconds.front(), seconds.back(), static_cast<double>(run.updates), rate});
                 std::printf("%-10s %-19s %6d %11.4e %11.4e %5.0f..%-5.0f%% %9.1f\n", problem.name.c_str(),
@@ -153,6 +178,7 @@ int main(int argc, char** argv) {
             std::snprintf(line, sizeof line, "%-10s %-19s CPU time to L1 = %g: %.3g s", problem.name.c_str(),
                           scheme_name(kSchemes[s]).c_str(), kTarget, time_to_target(errors, medians));
             summary.push_back(line);
+            if (problem.name == "two-shock") markdown[s].seconds_to_target = time_to_target(errors, medians);
             table.blank();
             table.blank();
         }
@@ -160,6 +186,7 @@ int main(int argc, char** argv) {
     }
     table.comment("load average after: " + load_average());
     write_data(options, "bench_segregation.dat", table);
+    write_file_atomically(options.data_dir + "/bench_segregation.md", markdown_table(markdown));
     std::printf("\nload average before: %s, after: %s\n", load_before.c_str(), load_average().c_str());
     for (const auto& line : summary) std::printf("%s\n", line.c_str());
     return 0;

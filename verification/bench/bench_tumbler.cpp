@@ -11,8 +11,8 @@
 // (tumbler_no_feedback.toml) and the kinematic drum (figures/tumbler_kinematic.toml) to check:
 //   d. the pattern after 25 s against bounds stated before the first full run (below);
 //   e. the Fig. 7d contrast with packing feedback on and off (as verify_tumbler, on the real pattern).
-// Writes DIR/tumbler_flow, DIR/tumbler_flow_explicit, DIR/tumbler (the data of
-// figures/full_fig7*_tumbler.gp), DIR/tumbler_no_feedback, DIR/tumbler_kinematic,
+// Writes DIR/tumbler_flow, DIR/tumbler_flow_explicit, DIR/tumbler (Fig. 7 at full resolution is
+// drawn from a run of its own: make fig7), DIR/tumbler_no_feedback, DIR/tumbler_kinematic,
 // bench_tumbler_times.dat, bench_tumbler_modes.dat and bench_tumbler_pattern.dat. Long (an hour
 // and a half on an idle machine): `make bench`.
 //

@@ -1,7 +1,7 @@
 // Exact solutions of the Gray-Thornton segregation equation, the constant-Phi, constant-T limit
 // of eq. (47): with psi = phi/Phi and q = S sqrt(T),
 //     d_t psi - d_z(q psi (1 - psi)) = 0 on [0, 1], zero flux at z = 0 and z = 1
-// (shared/paper/NOTES.md "Exact solutions"; Gray & Thornton 2005, Gray, Shearer & Thornton 2006,
+// (docs/paper_notes.md, section 4; Gray & Thornton 2005, Gray, Shearer & Thornton 2006,
 // Gray & Chugunov 2006). They are built from the wave structure (shock speeds from the
 // Rankine-Hugoniot condition, fans from the characteristic speed q(2 psi - 1)), not from any
 // code under test, and are piecewise linear in z, so their cell averages are exact.

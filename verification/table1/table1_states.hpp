@@ -45,7 +45,7 @@ inline const char* family_tag(Family f) {
 }
 
 /// What one row of Table 1 names. The interface flux is the table's last column (restored in
-/// ../shared/paper/NOTES.md). The wave pattern (S shock, R rarefaction, C standing wave, left to
+/// docs/paper_notes.md, section 2). The wave pattern (S shock, R rarefaction, C standing wave, left to
 /// right) is derived in docs/sect3_riemann.md, section 3; the paper names it for case 3 only
 /// (caption of Fig. 5: rarefaction, standing wave, shock).
 enum class Table1Flux { f_QR, f_QL, fL_min, fR_min };

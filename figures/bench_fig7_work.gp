@@ -1,0 +1,48 @@
+# Work against error for the paper's drum: each run's wall time against its distance from the best
+# estimate of the h -> 0 value (the default series' extrapolated value, or its finest run where the
+# series does not converge monotonically), per time stepping, grid and dt_max; the cells per
+# diameter at each point; the tolerances of a quick look, a figure and a paper (fig7_work.cpp).
+# needs: bench_fig7_convergence
+# Data: fig7_work.dat (explicit cells dt_factor wall_s err_angle err_layer err_index err_ring
+#       err_periphery err_core err_contrast err_axis, then u_angle ... u_axis: the reference's
+#       uncertainty, drawn as a grey band: an error below it is not resolved).
+# Usage (from the Makefile): gnuplot -e "benchdir='build/bench-data'; outfile='x.png'" figures/bench_fig7_work.gp
+f = benchdir.'/fig7_work.dat'
+set terminal pngcairo size 1500,1100 font "Sans,11" noenhanced
+set output outfile
+set multiplot layout 2,2 title "The paper's drum, work against error. Blue circles: default time stepping; red squares: explicit; green triangles: default, dt_max halved or doubled (numbers: cells per diameter)"
+set grid
+set logscale xy
+set format x "%g"
+set format y "%g"
+set xlabel "wall time of the run [s]"
+set key top right font ",9" opaque
+array cols[4] = [5, 7, 6, 10]
+array titles[4] = ["(a) dynamic angle of repose: |angle - reference| [deg]", "(b) segregation index: |index - reference|", \
+                   "(c) flowing-layer thickness: |layer - reference| [mm]", "(d) core: |share - reference|"]
+array tol_quick[2] = [2.0, 0.1]
+array tol_figure[2] = [0.5, 0.02]
+array tol_paper[2] = [0.2, 0.01]
+do for [i = 1:4] {
+    c = cols[i]
+    set title titles[i]
+    set ylabel "error"
+    stats f u (column(c + 8)) nooutput
+    set object 4 rect from graph 0, graph 0 to graph 1, first STATS_max fc rgb "gray80" fs transparent solid 0.4 noborder behind
+    set label 4 "below: within the reference's uncertainty" at graph 0.98, first STATS_max right offset 0,-0.8 font ",9"
+    if (i <= 2) {
+        set arrow 1 from graph 0, first tol_quick[i] to graph 1, first tol_quick[i] nohead dt 3 lc rgb "gray30"
+        set arrow 2 from graph 0, first tol_figure[i] to graph 1, first tol_figure[i] nohead dt 2 lc rgb "black"
+        set arrow 3 from graph 0, first tol_paper[i] to graph 1, first tol_paper[i] nohead dt 4 lc rgb "gray30"
+        set label 1 "quick look" at graph 0.02, first tol_quick[i] offset 0,0.5 font ",9"
+        set label 2 "figure" at graph 0.02, first tol_figure[i] offset 0,0.5 font ",9"
+        set label 3 "paper" at graph 0.02, first tol_paper[i] offset 0,0.5 font ",9"
+    } else {
+        unset arrow 1; unset arrow 2; unset arrow 3; unset label 1; unset label 2; unset label 3
+    }
+    plot f u (($1 == 0 && $3 == 1 && column(c) > 0) ? $4 : 1/0):c w lp lw 2 pt 7 lc rgb "#1f77b4" t "default", \
+         f u (($1 == 1 && column(c) > 0) ? $4 : 1/0):c w lp lw 2 pt 5 lc rgb "#d62728" t "explicit", \
+         f u (($1 == 0 && $3 != 1 && column(c) > 0) ? $4 : 1/0):c w p pt 9 ps 1.4 lc rgb "#2ca02c" t "default, dt_max x 0.5 or x 2", \
+         f u (column(c) > 0 ? $4 : 1/0):c:(sprintf("%d", $2)) w labels offset 0,1 font ",9" notitle
+}
+unset multiplot

@@ -1,0 +1,141 @@
+// Solution verification of the paper's drum (Fig. 7, verification/scenes/tumbler.toml; issue 25):
+// how much of each Fig. 7 quantity is the model and how much the grid and the time step.
+//
+//   1. runs (harness/fig7_study.hpp): the coupled drum with the default time stepping at each
+//      --cells (constant refinement ratio about sqrt 2: 50, 71, 100; add 141 if affordable), the
+//      explicit one at each --explicit-cells, dt_max halved and doubled at --dt-cells, a passive
+//      tracer in the core at each --cells, the model and the tracer at a lower T_floor;
+//   2. per quantity (angle of repose, flowing-layer thickness, segregation index, ring, periphery,
+//      core, Fig. 7d contrast, small-particle share within 0.05 D of the axis) and series: the
+//      convergence condition, observed order, Richardson extrapolation and GCI
+//      (harness/grid_convergence.hpp) with the sampling error next to it (fig7_report.hpp);
+//   3. work against error: wall time against |value - extrapolated|, and the cheapest run for a
+//      quick look, a figure and a paper (fig7_work.hpp);
+//   4. the paper's statements as checks on the finest run, bounds widened by their GCI, and the
+//      core's mechanisms (fig7_core.hpp): the one check table of this program.
+// Writes to DIR: fig7_runs.dat, fig7_convergence.dat/.md, fig7_work.dat/.md, fig7_core.md (the
+// .md files are ready for docs/generated/), and every run under fig7_convergence/ (its scene
+// NAME.toml and its files NAME/); figures/bench_fig7_convergence.gp and bench_fig7_work.gp plot them.
+//
+// Run: build/bench/bench_fig7_convergence [--data DIR] [options]    (--help lists them)
+//   the default is the real study, long (see README.md); a test of everything in about two minutes:
+//   --cells 25,35,50 --explicit-cells 25,35 --t-end 4 --average-from 2 --jitter-window 1
+#include "core/error.hpp"
+#include "harness/fig7_core.hpp"
+#include "harness/fig7_report.hpp"
+#include "harness/fig7_study.hpp"
+#include "harness/fig7_work.hpp"
+#include "harness/program.hpp"
+#include "scenes/tumbler.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+using namespace granseg;
+using namespace granseg::verify;
+namespace po = boost::program_options;
+
+namespace {
+
+[[noreturn]] void bad_option(const std::string& option, const std::string& what, const std::string& allowed) {
+    std::cerr << "bench_fig7_convergence: --" << option << ": " << what << " (allowed: " << allowed << ")\n";
+    std::exit(kExitBadInput);
+}
+
+/// "50,71,100" -> {50, 71, 100}; "" or "none" -> {}; each at least the tumbler's smallest grid,
+/// strictly increasing.
+std::vector<int> cell_list(const std::string& option, const std::string& text) {
+    const std::string allowed = "comma-separated increasing integers >= " + std::to_string(min_tumbler_cells()) + ", or none";
+    std::vector<int> cells;
+    if (text.empty() || text == "none") return cells;
+    std::istringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        std::size_t used = 0;
+        int n = 0;
+        try {
+            n = std::stoi(item, &used);
+        } catch (const std::exception&) {
+            bad_option(option, "\"" + item + "\" is not an integer", allowed);
+        }
+        if (used != item.size() || n < min_tumbler_cells() || n > 2000 || (!cells.empty() && n <= cells.back()))
+            bad_option(option, "\"" + text + "\"", allowed);
+        cells.push_back(n);
+    }
+    return cells;
+}
+
+Fig7Options parse(int argc, char** argv) {
+    Fig7Options o;
+    std::string cells = "50,71,100", explicit_cells = "50,71";
+    po::options_description d("bench_fig7_convergence: solution verification of the paper's drum (Fig. 7)");
+    d.add_options()("help", "this list")("data", po::value(&o.data_dir)->default_value(o.data_dir), "output directory")(
+        "cells", po::value(&cells)->default_value(cells), "default time stepping: cells per diameter, coarse to fine (3 or more)")(
+        "explicit-cells", po::value(&explicit_cells)->default_value(explicit_cells), "explicit time stepping (none, or 2 or more)")(
+        "dt-cells", po::value(&o.dt_cells)->default_value(0), "grid of the dt_max study, one of --cells (0: the finest)")(
+        "no-dt-study", "skip the dt_max study")("no-core-study", "skip the tracer and T_floor runs (check d)")(
+        "t-end", po::value(&o.t_end)->default_value(o.t_end), "s, length of every run")(
+        "average-from", po::value(&o.average_from)->default_value(o.average_from), "s, start of the angle's and layer's averages")(
+        "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
+        "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs")(
+        "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
+        "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
+    po::variables_map vm;
+    try {
+        po::store(po::parse_command_line(argc, argv, d), vm);
+        po::notify(vm);
+    } catch (const po::error& e) {
+        std::cerr << "bench_fig7_convergence: " << e.what() << " (allowed: the options of --help)\n";
+        std::exit(kExitBadInput);
+    }
+    if (vm.count("help")) std::cout << d << "\n", std::exit(0);
+    o.cells = cell_list("cells", cells), o.explicit_cells = cell_list("explicit-cells", explicit_cells);
+    o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study"), o.reuse = vm.count("reuse") > 0;
+    if (o.cells.size() < 3) bad_option("cells", "\"" + cells + "\" has fewer than three grids", "three or more");
+    if (o.explicit_cells.size() == 1) bad_option("explicit-cells", "one grid", "none, or two or more");
+    if (o.dt_cells != 0 && std::find(o.cells.begin(), o.cells.end(), o.dt_cells) == o.cells.end())
+        bad_option("dt-cells", std::to_string(o.dt_cells), "0 or one of --cells");
+    if (!(o.t_end > 0.0 && o.t_end <= 1000.0)) bad_option("t-end", fig7_number(o.t_end), "0 < t_end <= 1000");
+    if (!(o.average_from >= 0.0 && o.average_from < o.t_end))
+        bad_option("average-from", fig7_number(o.average_from), "0 <= average_from < t_end");
+    if (!(o.jitter_window > 0.0 && o.jitter_window <= o.t_end))
+        bad_option("jitter-window", fig7_number(o.jitter_window), "0 < jitter_window <= t_end");
+    if (!(o.T_floor_low > 0.0 && o.T_floor_low < 1e-2)) bad_option("T-floor-low", fig7_number(o.T_floor_low), "0 < T < 0.01");
+    if (o.threads < 1 || o.threads > 256) bad_option("threads", std::to_string(o.threads), "1..256");
+    return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    verify::parse_program_options(1, argv);  // only for its handling of the library's errors (exit 2, 3)
+    const Fig7Options o = parse(argc, argv);
+    const std::vector<Fig7Run> plan = plan_fig7_runs(o);
+    std::printf("bench_fig7_convergence: %zu runs of verification/scenes/tumbler.toml, t_end %g s, %d threads%s\n",
+                plan.size(), o.t_end, o.threads, o.reuse ? ", reusing unchanged runs" : "");
+    std::vector<Fig7Result> results;
+    for (const Fig7Run& run : plan) {
+        results.push_back(run_fig7(run, o));
+        const Fig7Result& r = results.back();
+        std::printf("run %-22s %8.1f s wall (%.1f s CPU), %7.0f steps: angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, periphery %.4f, "
+                    "core %.4f, contrast %.4f, axis %.4f\n",
+                    run.name.c_str(), r.wall, r.cpu, r.steps, r.value[0], r.value[1], r.value[2], r.value[3], r.value[4], r.value[5],
+                    r.value[6], r.value[7]);
+        std::fflush(stdout);
+    }
+    const Fig7Analysis analysis = analyse_fig7(std::move(results), o);
+    write_fig7_convergence(analysis, o);
+    const std::vector<std::string> answers = write_fig7_work(analysis, o);
+    std::printf("\n");
+    for (const Fig7Estimate& e : analysis.estimates)
+        std::printf("%-9s %-8s %-12s p %-8s f_ext %-10s U %-9s (se %s)\n", fig7_quantities()[e.quantity].name, e.series.c_str(),
+                    convergence_name(e.g.condition).c_str(), fig7_number(e.g.p, 3).c_str(), fig7_number(e.g.f_ext).c_str(),
+                    fig7_number(e.g.uncertainty, 3).c_str(), fig7_number(e.se, 2).c_str());
+    std::printf("\n");
+    for (const std::string& a : answers) std::printf("%s\n", a.c_str());
+    std::printf("\n");
+    return check_fig7_statements(analysis, o);
+}

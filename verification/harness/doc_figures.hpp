@@ -1,0 +1,38 @@
+// The reference figures the pages show on a fresh clone (docs/figures/NAME.png, rendered by
+// `make docs-figures` from figures/NAME.gp): each is recorded in docs/figures/fingerprints.txt
+// with a fingerprint of what it was drawn from, so that verify_docs can tell a stale image
+// without comparing pixels.
+//
+// What a figure was drawn from: its script, the scripts it loads (`load '...'`), and the data
+// files its line `# reads: FILE ...` names (relative to the data directory). The fingerprint is
+// FNV-1a (64 bit) over the scripts' text and the data files' numbers, each rounded to 4
+// significant digits and set to 0 below 1e-9 of its column's largest magnitude, comment lines
+// skipped: a picture cannot show smaller changes, and round-off that differs between machines
+// (or timings in comment lines) does not make an image stale.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace granseg::verify::docs {
+
+/// The fingerprint of figure `name` (16 hexadecimal digits), or "" with `error` set when its
+/// script, its `# reads:` line or a data file is missing.
+std::string figure_fingerprint(const std::filesystem::path& root, const std::string& name,
+                               const std::filesystem::path& data_dir, std::string& error);
+
+/// The data files figure `name` reads (its `# reads:` line; empty if none).
+std::vector<std::string> figure_reads(const std::filesystem::path& root, const std::string& name);
+
+/// The fingerprint of a data file's text alone (the data part of figure_fingerprint).
+std::string data_fingerprint(const std::string& text);
+
+/// The recorded fingerprints (NAME -> fingerprint) of docs/figures/fingerprints.txt.
+std::map<std::string, std::string> read_fingerprints(const std::filesystem::path& file);
+
+/// Writes `fingerprints` as docs/figures/fingerprints.txt (one line "NAME FINGERPRINT" each).
+void write_fingerprints(const std::filesystem::path& file, const std::map<std::string, std::string>& fingerprints);
+
+}  // namespace granseg::verify::docs

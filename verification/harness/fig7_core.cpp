@@ -1,0 +1,103 @@
+#include "harness/fig7_core.hpp"
+
+#include "core/output.hpp"
+#include "flow/flow_settings.hpp"
+#include "harness/check_table.hpp"
+#include "tumbler/coupled_tumbler.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace granseg::verify {
+
+namespace {
+
+constexpr int kRing = 3, kPeriphery = 4, kCore = 5, kContrast = 6;  // fig7_quantities()
+// c. As verify_tumbler e: the contrast exceeds twice the spread of Phi within a kind and a depth bin.
+constexpr double kContrastSpreads = 2.0;
+// d. "Mainly untouched": more than half of the core's material is still there at t_end.
+constexpr double kMainly = 0.5;
+
+/// Grid GCI plus dt GCI of quantity q (the dt term only if the study has a dt series).
+double uncertainty(const Fig7Analysis& a, int q) {
+    const Fig7Estimate* dt = a.find(q, "dt");
+    return a.find(q, "default")->g.uncertainty + (dt ? dt->g.uncertainty : 0.0);
+}
+
+const Fig7Result* only_run(const Fig7Analysis& a, Fig7Kind kind) {
+    const auto runs = a.runs(kind, false);
+    return runs.empty() ? nullptr : runs.front();
+}
+
+}  // namespace
+
+int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
+    const Fig7Result& fine = a.finest();
+    const double m0 = fine.initial_mixture;
+    CheckTable t("Fig. 7's statements on the finest run (" + std::to_string(fine.run.cells) +
+                 " cells per diameter), each bound widened by its grid and dt GCI");
+    t.at_least("a. ring of small particles: ring - U >= mixture", fine.value[kRing] - uncertainty(a, kRing), m0);
+    t.at_most("b. large particles at the wall: periphery + U <= mixture", fine.value[kPeriphery] + uncertainty(a, kPeriphery), m0);
+    t.at_least("c. Fig. 7d: (contrast - U) / spread", (fine.value[kContrast] - uncertainty(a, kContrast)) / fine.packing_spread,
+               kContrastSpreads);
+    std::ostringstream md;
+    md << "| the core after " << fig7_number(o.t_end) << " s | value |\n|---|---|\n";
+    const auto row = [&](const std::string& what, const std::string& value) { md << "| " << what << " | " << value << " |\n"; };
+    const double C1 = fine.value[kCore];
+    const Fig7Estimate& core = *a.find(kCore, "default");
+    row("small-particle share of the core, finest grid (initial " + fig7_number(m0) + ")", fig7_number(C1));
+    row("the same, h -> 0 (" + convergence_name(core.g.condition) + ")",
+        (std::isnan(core.g.f_ext) ? "range " + fig7_number(core.g.lo) + " – " + fig7_number(core.g.hi) : fig7_number(core.g.f_ext)) +
+            " +- " + fig7_number(core.g.uncertainty, 2));
+    if (!o.core_study) {
+        t.note("d. the core: not studied (--no-core-study)");
+    } else {
+        const Fig7Estimate* tracer = a.find(kCore, "tracer");
+        const Fig7Result *K_run = a.runs(Fig7Kind::tracer, false).front(), *floor = only_run(a, Fig7Kind::floor),
+                         *K_floor = only_run(a, Fig7Kind::tracer_floor);
+        const double K1 = K_run->value[kCore], U_K = tracer ? tracer->g.uncertainty : std::nan("");
+        t.at_least("d. mainly untouched core: tracer's retained share - U", K1 - U_K, kMainly);
+        const bool K_extrapolated = tracer && tracer->g.condition == Convergence::monotone;
+        const double K_ext = K_extrapolated ? tracer->g.f_ext : K1;
+        // The split of C1 - m0 (see the header); without a monotone series the discretisation part
+        // is known only in size (its uncertainty), and the model's part is not separated from it.
+        const bool C_extrapolated = core.g.condition == Convergence::monotone;
+        const double discretisation = C_extrapolated ? C1 - core.g.f_ext : core.g.uncertainty;
+        const double floor_part = C1 - floor->value[kCore];
+        const double model = C1 - m0 - (C_extrapolated ? discretisation : 0.0) - floor_part;
+        const std::array<std::pair<double, const char*>, 3> parts{{
+            {std::fabs(discretisation), "numerical diffusion (the grid)"},
+            {std::fabs(floor_part), "segregation at the temperature floor"},
+            {std::fabs(model), "the model's own transport (creep below the layer) and segregation above the floor"}}};
+        const auto largest = std::max_element(parts.begin(), parts.end());
+        // The reach of segregation where T sits at its floor: |a| <= S0 sqrt(T_floor) |g| (eq. 46).
+        const double S0 = fig7_scene_number("segregation", "S", CoupledTumblerSetup{}.S);
+        const double T_floor = fig7_scene_number("flow", "T_floor", FlowSettings{}.T_floor);
+        const double g = fig7_scene_number("drum", "gravity", DrumSpec{}.gravity);
+        row("tracer (S = 0): share of the core's material at t_end that started there, finest grid", fig7_number(K1));
+        row("the same, h -> 0 (" + (tracer ? convergence_name(tracer->g.condition) : std::string("one grid")) + ")",
+            (K_extrapolated ? fig7_number(K_ext) : "–") + " +- " + fig7_number(U_K, 2));
+        row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", K_extrapolated ? fig7_number(K_ext - K1, 3) : "–");
+        row("material exchanged by the model's creep, 1 - K_ext", fig7_number(1.0 - K_ext, 3));
+        row("T_floor " + fig7_number(o.T_floor_low) + " instead of the scene's: retained share (tracer)", fig7_number(K_floor->value[kCore]));
+        row("core share: discretisation part C(h1) - C_ext" + std::string(C_extrapolated ? "" : " (not monotone: its size, the GCI)"),
+            fig7_number(discretisation, 3));
+        row("core share: the floor's part C(h1) - C(h1, lower T_floor)", fig7_number(floor_part, 3));
+        row("core share: the rest (creep and segregation above the floor)", fig7_number(model, 3));
+        row("largest reach of segregation at the floor, S0 sqrt(T_floor) g t_end (m; a cell: " + fig7_number(fine.h, 3) + " m)",
+            fig7_number(S0 * std::sqrt(T_floor) * g * o.t_end, 2));
+        row("moves phi_hat in the core most", largest->second);
+        t.note("d. core: C(h1) = " + fig7_number(C1) + " (initial " + fig7_number(m0) + "); tracer retained share " + fig7_number(K1) +
+               " (h -> 0: " + fig7_number(K_ext) + " +- " + fig7_number(U_K, 2) + "), at the lower floor " +
+               fig7_number(K_floor->value[kCore]));
+        t.note("d. core change split: discretisation " + fig7_number(discretisation, 3) + ", floor " + fig7_number(floor_part, 3) +
+               ", the rest " + fig7_number(model, 3) + ": most from " + largest->second);
+    }
+    md << "\nWritten by `bench_fig7_convergence` (its check table states a-d with their bounds).\n";
+    write_file_atomically(o.data_dir + "/fig7_core.md", md.str());
+    return t.finish();
+}
+
+}  // namespace granseg::verify

@@ -1,0 +1,188 @@
+#include "harness/fig7_study.hpp"
+
+#include "core/error.hpp"
+#include "core/output.hpp"
+#include "core/scene_file.hpp"
+#include "flow/flow_settings.hpp"
+#include "harness/program.hpp"
+#include "harness/time_series.hpp"
+#include "scenes/scene_kind.hpp"
+#include "scenes/tumbler.hpp"
+#include "tumbler/drum.hpp"
+
+#include <omp.h>
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace granseg::verify {
+
+namespace {
+
+constexpr const char* kScene = "verification/scenes/tumbler.toml";
+// The tracer rides on the closures of the paper's perfectly mixed start (phi_hat = 0.5), the
+// mixture of the full model's initial bed: the flow it sees is the flow of tumbler-flow.
+constexpr double kTracerMixture = 0.5;
+
+/// A data file's columns by name (from its first line) and rows; "nan" and "inf" read as such.
+struct NamedTable {
+    std::map<std::string, std::size_t> index;
+    std::vector<std::vector<double>> rows;
+
+    const std::vector<double>& last() const { return rows.back(); }
+    double at(const std::vector<double>& row, const std::string& column) const {
+        const auto it = index.find(column);
+        if (it == index.end() || it->second >= row.size()) throw InputError("fig7: no column " + column);
+        return row[it->second];
+    }
+};
+
+NamedTable read_named(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError("fig7: cannot read " + path);
+    NamedTable t;
+    std::string line;
+    std::getline(in, line);
+    std::istringstream names(line.substr(1));
+    for (std::string name; names >> name;) t.index.emplace(name, t.index.size());
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream row(line);
+        std::vector<double> v;
+        for (std::string token; row >> token;) v.push_back(std::strtod(token.c_str(), nullptr));
+        t.rows.push_back(v);
+    }
+    if (t.rows.empty()) throw InputError("fig7: no rows in " + path);
+    return t;
+}
+
+std::string file_text(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::tracer_floor; }
+bool is_floor(Fig7Kind k) { return k == Fig7Kind::floor || k == Fig7Kind::tracer_floor; }
+
+/// The scene text of `run`: the paper's scene with the run's keys changed.
+std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
+    toml::table scene = toml::parse_file(kScene);
+    const auto section = [&](const char* name) -> toml::table& {
+        if (!scene.contains(name)) scene.insert(name, toml::table{});
+        return *scene[name].as_table();
+    };
+    section("drum").insert_or_assign("cells_per_diameter", run.cells);
+    toml::table& r = section("run");
+    r.insert_or_assign("t_end", o.t_end), r.insert_or_assign("angle_from", o.average_from);
+    r.insert_or_assign("frames", 0), r.insert_or_assign("vtk", false);
+    toml::table& flow = section("flow");
+    if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
+    if (run.dt_factor != 1.0) {
+        const double dt_max = flow["dt_max"].value_or(FlowSettings{}.dt_max);
+        flow.insert_or_assign("dt_max", run.dt_factor * dt_max);
+    }
+    if (is_floor(run.kind)) flow.insert_or_assign("T_floor", o.T_floor_low);
+    if (is_tracer(run.kind)) {
+        const double r_core = read_tumbler(SceneFile::load(kScene)).run.regions.r_core;
+        char expression[96];
+        std::snprintf(expression, sizeof expression, "sqrt(x^2 + z^2) < %.17g ? 1 : 0", r_core);
+        section("segregation").insert_or_assign("S", 0.0);
+        section("initial").insert_or_assign("phi_hat", std::string(expression));
+        toml::table& coupling = section("coupling");
+        coupling.insert_or_assign("packing_feedback", false), coupling.insert_or_assign("mixture", kTracerMixture);
+    }
+    std::ostringstream text;
+    text << "# bench_fig7_convergence: " << kScene << " as run " << run.name << "\n" << scene << "\n";
+    return text.str();
+}
+
+std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
+
+}  // namespace
+
+const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities() {
+    static const std::array<Fig7Quantity, kFig7Quantities> q{{
+        {"angle", "dynamic angle of repose", "deg", true, "angle_mean_deg", "surface_angle_deg", 1.0},
+        {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3},
+        {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0},
+        {"ring", "ring, small-particle share", "-", false, "ring", "ring", 1.0},
+        {"periphery", "periphery, small-particle share", "-", false, "periphery", "periphery", 1.0},
+        {"core", "core, small-particle share", "-", false, "core", "core", 1.0},
+        {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0},
+        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis", "axis", 1.0},
+    }};
+    return q;
+}
+
+double fig7_scene_number(const char* section, const char* key, double fallback) {
+    return toml::parse_file(kScene)[section][key].value_or(fallback);
+}
+
+std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
+    std::vector<Fig7Run> runs;
+    for (int n : o.cells) runs.push_back({cell_name("default", n), Fig7Kind::grid, false, n, 1.0});
+    for (int n : o.explicit_cells) runs.push_back({cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0});
+    const int finest = o.cells.back();
+    if (o.dt_study) {
+        const int n = o.dt_cells > 0 ? o.dt_cells : finest;
+        runs.push_back({cell_name("default", n) + "_dt0.5", Fig7Kind::dt, false, n, 0.5});
+        runs.push_back({cell_name("default", n) + "_dt2", Fig7Kind::dt, false, n, 2.0});
+    }
+    if (o.core_study) {
+        for (int n : o.cells) runs.push_back({cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0});
+        runs.push_back({cell_name("floor", finest), Fig7Kind::floor, false, finest, 1.0});
+        runs.push_back({cell_name("tracer_floor", finest), Fig7Kind::tracer_floor, false, finest, 1.0});
+    }
+    return runs;
+}
+
+Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
+    namespace fs = std::filesystem;
+    const std::string dir = o.data_dir + "/fig7_convergence/" + run.name, scene_path = dir + ".toml";
+    const std::string text = scene_text(run, o), wall_file = dir + "/wall_seconds.dat";
+    const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text &&
+                       fs::exists(dir + "/summary.dat") && fs::exists(wall_file);
+    if (!reuse) {
+        write_file_atomically(scene_path, text);
+        omp_set_num_threads(o.threads);
+        Timing timing;
+        add_timed(timing, [&] { run_scene_file(scene_path, dir); });
+        DataTable table({"wall_seconds", "cpu_seconds", "threads"});
+        table.comment("bench_fig7_convergence: wall and CPU time (all threads) of the run of " + run.name + ".toml");
+        table.row({timing.wall, timing.cpu, static_cast<double>(o.threads)});
+        write_file_atomically(wall_file, table.str());
+    }
+    Fig7Result r;
+    r.run = run;
+    const NamedTable times = read_named(wall_file);
+    r.wall = times.at(times.last(), "wall_seconds"), r.cpu = times.at(times.last(), "cpu_seconds");
+    const NamedTable summary = read_named(dir + "/summary.dat"), history = read_named(dir + "/history.dat");
+    const std::vector<double>& s = summary.last();
+    r.steps = summary.at(s, "steps");
+    r.dt_mean = summary.at(s, "t_end") / r.steps;
+    r.h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / run.cells;
+    r.initial_mixture = summary.at(s, "initial_mixture"), r.packing_spread = summary.at(s, "packing_spread");
+    const double t_end = summary.at(s, "t_end");
+    for (int i = 0; i < kFig7Quantities; ++i) {
+        const Fig7Quantity& q = fig7_quantities()[i];
+        r.value[i] = q.scale * summary.at(s, q.summary_column);
+        std::vector<double> t, v;
+        for (const std::vector<double>& row : history.rows) {
+            const double ti = history.at(row, "t"), vi = history.at(row, q.history_column);
+            const bool in_window = q.time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
+            if (in_window && std::isfinite(vi)) t.push_back(ti), v.push_back(vi);
+        }
+        r.sampling[i] = q.scale * (q.time_average ? batch_mean_error(v) : detrended_spread(t, v));
+    }
+    return r;
+}
+
+}  // namespace granseg::verify
