@@ -12,10 +12,9 @@ namespace granseg {
 
 namespace {
 /// The conjugate gradients solve for the change dT = T_new - T* and stop when its residual has
-/// fallen to this share of the residual of T*: the error is 1e-6 of the step's change of T (far
-/// below the step's own error: the 100-cell drum's angle moves by 4e-8 deg against 1e-8, with a
-/// quarter fewer iterations), and a state that does not change stays exactly as it is.
-constexpr double kTolerance = 1e-6;
+/// fallen to this share of the residual of T*: the error is 1e-8 of the step's change of T (far
+/// below the step's own error), and a state that does not change stays exactly as it is.
+constexpr double kTolerance = 1e-8;
 /// Round-off may stop the iterations short of kTolerance; a residual above this is an error.
 constexpr double kAcceptable = 1e-5;
 /// Far more than the iterations the bounded condition number needs.
