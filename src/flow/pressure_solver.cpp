@@ -63,13 +63,16 @@ void PressureSolver::newton_update(const FlowMesh& mesh, const Material& materia
     for (long q = 0; q < cells; ++q) {
         const std::size_t c = mesh.inside_cells[q];
         const long r = pattern_.unknown[c];
+        const double T = state.T[c], Phi_co = cl.Phi_co[c], Phi_rcp = cl.Phi_rcp[c];
         const double Phi = volume_[r] + slope_[r] * step[r];  // the step's change of Phi
-        if (step[r] >= 0.0 || !(Phi > 0.0)) {
+        const double p_co = kinetic_pressure(Phi_co, compressibility_factor(material, Phi_co, Phi_rcp), T);  // p(Phi_co)
+        const bool across_kink = volume_[r] > Phi_co && cl.p[c] + x_[r] + step[r] < p_co && Phi > 0.0;
+        if (!across_kink) {
             x_[r] += step[r];
             continue;
         }
-        const double g = compressibility_factor(material, Phi, cl.Phi_rcp[c]);
-        x_[r] = kinetic_pressure(Phi, g, state.T[c]) + yield_pressure(material.T0, Phi, cl.Phi_co[c], g) - cl.p[c];
+        const double g = compressibility_factor(material, Phi, Phi_rcp);
+        x_[r] = kinetic_pressure(Phi, g, T) + yield_pressure(material.T0, Phi, Phi_co, g) - cl.p[c];
     }
 }
 

@@ -23,6 +23,14 @@
 // grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
 // faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start)
 // unless dp = 0 is closer to the solution.
+// The Newton update, per cell: p + s, except where s would take a cell from above Phi_co (the
+// stiff branch, dPhi/dp ~ 0.08 in the drum) below the kink at Phi_co into the soft branch, where the step,
+// linearised on the stiff side, lands far too low, near p = 0 where dPhi/dp = 1/T is up to 100
+// times its value at the root, and the iterates then crawl back from below over 5-7 Newton steps
+// (traced in the 100-cell drum). Such a cell moves by the same Newton step expressed in Phi,
+// Phi(p) + s dPhi/dp, taken back to p by the equation of state: as p(Phi) is convex, a single
+// cell's step in Phi cannot jump past its root. Elsewhere the p form stays, also because the round trip through the equation of
+// state costs tens of ulps of p, which a bed at rest would feel (verify_flow_rest's balanced box).
 #pragma once
 
 #include "closures/material.hpp"
@@ -64,7 +72,8 @@ public:
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-    /// dp += the Newton step (below), in p or, where the step lowers p, in Phi.
+    /// dp += the Newton step s, in p, or in Phi for a cell whose step would take it from the
+    /// stiff branch (Phi > Phi_co) below the kink (header comment).
     void newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
                        const Eigen::VectorXd& step);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
