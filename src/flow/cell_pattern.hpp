@@ -1,4 +1,12 @@
-// The sparsity pattern shared by the implicit cell systems of the flow solver (the pressure
+// The sparsity pattern of the implicit cell systems of the flow solver.
+//
+//   solves      nothing: numbers the unknowns and locates every entry of the matrix's values
+//   inputs      a FlowMesh (once)
+//   outputs     cell -> row, the value index of every diagonal and of each face's two entries
+//   invariants  one row per inside cell, symmetric: a face's two off-diagonal entries are set
+//               together (couple())
+//
+// Shared by the pressure
 // equation, flow/pressure_solver.hpp, and the coupled viscosity, flow/coupled_viscosity.hpp): one
 // row per inside cell, an entry on the diagonal and one for each pair of cells meeting at an
 // interior face (a weighted graph Laplacian plus a diagonal), built once per mesh with zero values;

@@ -1,7 +1,7 @@
 #include "flow/coupled_viscosity.hpp"
 
 #include "core/error.hpp"
-#include "flow/diffusion_lines.hpp"
+#include "flow/diffusion_faces.hpp"
 
 #include <algorithm>
 
@@ -51,7 +51,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         for (const MeshFace& f : mesh.faces[a]) {
             if (f.kind == kInterior) {
                 if (f.repeat) continue;
-                const double w = r * harmonic_mean(eta[f.lo], eta[f.hi]);
+                const double w = r * face_conductance(true, eta[f.lo], eta[f.hi], true);
                 const bool lo = active(f.lo), hi = active(f.hi);
                 if (lo && hi)
                     pattern_.couple(value, a, f, w);
@@ -61,19 +61,18 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
             }
             const std::size_t c = f.lo;  // a wall: both sides name the inside cell
             if (!active(c)) continue;
-            const double w = 2.0 * r * eta[c];
+            const double w = r * face_conductance(false, eta[c], 0.0, true);
             value[pattern_.diagonal[pattern_.unknown[c]]] += w;
             // Moving walls are those of the domain boundary (embedded walls are at rest).
             const int side = f.kind == kWallBelow ? 0 : 1;
-            const int index = static_cast<int>((c / grid.stride(a)) % grid.n[a]);
-            if (index == (side == 0 ? 0 : grid.n[a] - 1))
+            if (on_domain_boundary(grid, a, f.f))
                 for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }
     ldlt_.factorize(pattern_.matrix);
     if (ldlt_.info() != Eigen::Success)
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
-    const Eigen::MatrixXd u = solve_columns();
+    const Eigen::MatrixXd u = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells)
         for (int b = 0; b < 3; ++b) {
             state.u[b][c] = u(pattern_.unknown[c], b);
@@ -81,10 +80,15 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         }
 }
 
-Eigen::MatrixXd CoupledViscosity::solve_columns() const {
+Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(rhs_.rows(), rhs_.cols());
+    std::vector<Eigen::Index> columns;  // a zero column solves to zero exactly
     for (Eigen::Index b = 0; b < rhs_.cols(); ++b)
-        if (!rhs_.col(b).isZero(0.0)) x.col(b) = ldlt_.solve(rhs_.col(b));  // a zero column solves to zero exactly
+        if (!rhs_.col(b).isZero(0.0)) columns.push_back(b);
+    // The columns' solves are independent: one per thread.
+    const long n = static_cast<long>(columns.size());
+#pragma omp parallel for schedule(static, 1) if (parallel && n > 1)
+    for (long q = 0; q < n; ++q) x.col(columns[q]) = ldlt_.solve(rhs_.col(columns[q]));
     return x;
 }
 
@@ -93,7 +97,7 @@ void CoupledViscosity::diffuse_change(const FlowMesh& mesh, std::array<std::vect
         const long r = pattern_.unknown[c];
         for (int b = 0; b < 3; ++b) rhs_(r, b) = mass_[r] * du[b][c];
     }
-    const Eigen::MatrixXd w = solve_columns();
+    const Eigen::MatrixXd w = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         if (mass_[r] > 0.0)

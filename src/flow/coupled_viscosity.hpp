@@ -1,5 +1,13 @@
-// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 4): every velocity
-// component u_b solves
+// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 4).
+//
+//   solves      Phi u_new - dt div(eta grad u_new) = Phi u for each velocity component, by one
+//               sparse LDL^T factorisation per step and a back-substitution per component
+//   inputs      Phi, u, eta per cell, dt, the velocities of the domain-boundary walls
+//   outputs     u and Phi u; diffuse_change(): a velocity change diffused by the same factor
+//   invariants  empty cells (Phi <= Phi_vacuum) are identity rows at rest; the matrix is
+//               symmetric positive definite and an M-matrix
+//
+// Every velocity component u_b solves
 //     Phi u_new - dt sum_axis d/dx_a (eta d u_new/dx_a) = Phi u      (eqs. 9-11, stress eta grad u)
 // with the same discretisation as the line solves of flow/viscosity.hpp (face coefficient the
 // harmonic mean of the cells' eta, no-slip walls at h/2 with the wall's velocity on moving walls
@@ -43,8 +51,9 @@ public:
 private:
     using Matrix = Eigen::SparseMatrix<double>;
     void set_up();
-    /// The factor's solution for each column of rhs_; columns of zeros (u_y in an x-z slice) skip the solve.
-    Eigen::MatrixXd solve_columns() const;
+    /// The factor's solution for each column of rhs_, on OpenMP threads if `parallel`; columns of
+    /// zeros (u_y in an x-z slice) skip the solve.
+    Eigen::MatrixXd solve_columns(bool parallel) const;
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
     Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)

@@ -1,5 +1,11 @@
-// The implicit diffusion operator of one axis as tridiagonal line systems (docs/flow_solver.md
-// Sect. 4): for a field x with coefficient kappa (eta for the velocity, lambda for T),
+// The implicit diffusion operator of one axis as tridiagonal line systems.
+//
+//   solves      Phi x_new - r d/dx_a (kappa dx_new/dx_a) h_a^2 = rhs along every line of one axis
+//   inputs      Phi, kappa per cell, r, the wall rule (no-slip or adiabatic)
+//   outputs     the factorised lines; solve() overwrites a right-hand side with the solution
+//   invariants  outside and empty cells are identity rows; M-matrices
+//
+// docs/flow_solver.md Sect. 4: for a field x with coefficient kappa (eta for the velocity, lambda for T),
 //     Phi x_new - r d/dx_a (kappa dx_new/dx_a) h_a^2 = rhs,     r = dt/h_a^2 (times 3/2 for T),
 // with the face coefficient the harmonic mean of the two cells' kappa (a face between the bed and
 // near-empty air carries almost no stress or heat), walls Dirichlet at distance h/2 (no-slip,
@@ -7,18 +13,13 @@
 // rows. The matrices are M-matrices: positive data give positive solutions.
 #pragma once
 
+#include "flow/diffusion_faces.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/line_solver.hpp"
 
 #include <vector>
 
 namespace granseg {
-
-/// The harmonic mean 2ab/(a+b) of two coefficients (0 if both are 0).
-inline double harmonic_mean(double a, double b) {
-    const double s = a + b;
-    return s > 0.0 ? 2.0 * a * b / s : 0.0;
-}
 
 class DiffusionLines {
 public:

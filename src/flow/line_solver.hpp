@@ -1,5 +1,12 @@
-// Batched tridiagonal solves along every grid line of one axis: the implicit, dimension-split
-// (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver.md, Sect. 4).
+// Batched tridiagonal solves along every grid line of one axis.
+//
+//   solves      diag x - lower x[-s] - upper x[+s] = rhs on every line of one axis (cyclic on a
+//               periodic axis)
+//   inputs      lower, diag, upper per cell (once per factor()), right-hand sides
+//   outputs     the solutions, overwriting the right-hand sides
+//   invariants  no pivoting: diag >= lower + upper (an M-matrix)
+//
+// Used by the implicit, dimension-split (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver.md, Sect. 4).
 //
 // Along a line with cells 0..n-1 the system is
 //     diag[c] x[c] - lower[c] x[c - s] - upper[c] x[c + s] = rhs[c]      (s: stride of the axis)

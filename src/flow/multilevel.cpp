@@ -222,7 +222,9 @@ void Multilevel::cycle(std::size_t l) const {
         cycle(l + 1);
         double* x = L.x.data();
         const double* xc = C.x.data();
-        for (long r = 0; r < L.A.rows(); ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
+        for_rows(L.A.rows(), parallel_, [&, x, xc](long begin, long end) {
+            for (long r = begin; r < end; ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
+        });
     }
     sweep(L, true);
 }

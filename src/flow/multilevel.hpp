@@ -1,5 +1,14 @@
-// A multilevel preconditioner for the conjugate gradients of the pressure solve
-// (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 5): symmetric positive definite matrices
+// A multilevel preconditioner for the conjugate gradients of the pressure solve.
+//
+//   solves      nothing exactly: one cycle z = B b approximates A^-1 b, with B fixed,
+//               symmetric and positive definite, so that plain conjugate gradients may use it
+//   inputs      the sparsity pattern and the grid coordinates of its rows (once); the values of
+//               a matrix A = D + K of that pattern (per Newton step); a right-hand side b
+//   outputs     z = B b
+//   invariants  every level is again a diagonal plus a weighted graph Laplacian; new values
+//               re-add sums along maps built once, without allocation
+//
+// Used by the pressure solve (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 5): symmetric positive definite matrices
 // A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with
 // faces of weight 0, the inside cells of a drum an irregular part of the grid).
 //

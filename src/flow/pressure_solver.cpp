@@ -56,6 +56,26 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
     return *this;
 }
 
+void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                                   const CellClosures& cl, const Eigen::VectorXd& step) {
+    const long cells = static_cast<long>(mesh.inside_cells.size());
+#pragma omp parallel for schedule(static) if (mesh.parallel)
+    for (long q = 0; q < cells; ++q) {
+        const std::size_t c = mesh.inside_cells[q];
+        const long r = pattern_.unknown[c];
+        const double T = state.T[c], Phi_co = cl.Phi_co[c], Phi_rcp = cl.Phi_rcp[c];
+        const double Phi = volume_[r] + slope_[r] * step[r];  // the step's change of Phi
+        const double p_co = kinetic_pressure(Phi_co, compressibility_factor(material, Phi_co, Phi_rcp), T);  // p(Phi_co)
+        const bool across_kink = volume_[r] > Phi_co && cl.p[c] + x_[r] + step[r] < p_co && Phi > 0.0;
+        if (!across_kink) {
+            x_[r] += step[r];
+            continue;
+        }
+        const double g = compressibility_factor(material, Phi, Phi_rcp);
+        x_[r] = kinetic_pressure(Phi, g, T) + yield_pressure(material.T0, Phi, Phi_co, g) - cl.p[c];
+    }
+}
+
 PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
                                          const CellClosures& cl, const PressureFaces& faces,
                                          const std::vector<double>& change, double accuracy, std::vector<double>& dp) {
@@ -69,7 +89,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
                 pattern_.couple(value, a, f, faces[a].coupling[f.f]);
     std::copy(value, value + laplacian_.nonZeros(), J_.valuePtr());
     Eigen::VectorXd base(rows), target(rows);
-    x_.resize(rows), slope_.resize(rows), F_.resize(rows);
+    x_.resize(rows), volume_.resize(rows), slope_.resize(rows), F_.resize(rows);
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
         base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], state.Phi[c]).Phi;
@@ -85,15 +105,18 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
     // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
     // Newton step can reduce (the step rounds away in dp + step).
+    const long cells = static_cast<long>(mesh.inside_cells.size());
     auto evaluate = [&] {
         F_ = laplacian_ * x_ - target;
         double resolution = 0.0;
-        for (std::size_t c : mesh.inside_cells) {
+#pragma omp parallel for reduction(max : resolution) schedule(static) if (mesh.parallel)
+        for (long q = 0; q < cells; ++q) {
+            const std::size_t c = mesh.inside_cells[q];
             const long r = pattern_.unknown[c];
             const VolumeAtPressure v =
                 volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], base[r]);
             F_[r] += v.Phi - base[r];
-            slope_[r] = v.slope;
+            volume_[r] = v.Phi, slope_[r] = v.slope;
             resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
         }
         return resolution;
@@ -122,7 +145,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         cg_.setTolerance(std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm())));
         const Eigen::VectorXd step = cg_.solve(-F_);
         stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
-        x_ += step;
+        newton_update(mesh, material, state, cl, step);
         resolution = evaluate();
     }
     for (std::size_t c : mesh.inside_cells) dp[c] = x_[pattern_.unknown[c]];

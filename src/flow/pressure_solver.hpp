@@ -1,5 +1,14 @@
-// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5): find
-// the pressure increments dp per inside cell with
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5).
+//
+//   solves      F(dp) = 0 (below) for the pressure increments dp, by Newton's method with
+//               multilevel-preconditioned conjugate gradients for each Newton step
+//   inputs      p, T, Phi, Phi_rcp, Phi_co per cell; per face the coupling K_f; per cell the
+//               explicit mass change r_c; dp of the last step (the warm start)
+//   outputs     dp per inside cell; the Newton and Krylov counts, the final residual
+//   invariants  Phi(p + dp) < Phi_rcp in every cell (Newton approaches the root from below); a
+//               bed at rest (r = 0 to round-off) keeps dp = 0
+//
+// Find the pressure increments dp per inside cell with
 //     F_c(dp) = Phi(p_c + dp_c; T_c) - Phi_c - r_c + sum_faces K_f (dp_c - dp_nb) = 0,
 // where Phi(p; T) is the inverse equation of state (flow/equation_of_state.hpp), r_c the mass
 // change of the explicit part of the face mass fluxes, and K_f = (dt/h)^2 Phi_donor/Phi_face >= 0
@@ -14,6 +23,14 @@
 // grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
 // faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start)
 // unless dp = 0 is closer to the solution.
+// The Newton update, per cell: p + s, except where s would take a cell from above Phi_co (the
+// stiff branch, dPhi/dp ~ 0.08 in the drum) below the kink at Phi_co into the soft branch, where the step,
+// linearised on the stiff side, lands far too low, near p = 0 where dPhi/dp = 1/T is up to 100
+// times its value at the root, and the iterates then crawl back from below over 5-7 Newton steps
+// (traced in the 100-cell drum). Such a cell moves by the same Newton step expressed in Phi,
+// Phi(p) + s dPhi/dp, taken back to p by the equation of state: as p(Phi) is convex, a single
+// cell's step in Phi cannot jump past its root. Elsewhere the p form stays, also because the round trip through the equation of
+// state costs tens of ulps of p, which a bed at rest would feel (verify_flow_rest's balanced box).
 #pragma once
 
 #include "closures/material.hpp"
@@ -55,9 +72,13 @@ public:
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+    /// dp += the Newton step s, in p, or in Phi for a cell whose step would take it from the
+    /// stiff branch (Phi > Phi_co) below the kink (header comment).
+    void newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                       const Eigen::VectorXd& step);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
-    Eigen::VectorXd x_, rhs_, slope_, F_;
+    Eigen::VectorXd x_, volume_, slope_, F_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 

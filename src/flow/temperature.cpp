@@ -2,7 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "flow/diffusion_lines.hpp"
+#include "flow/diffusion_faces.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -43,15 +43,16 @@ void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const Ce
                 const long lo = ar.lo_at(i), hi = ar.hi_at(i);
                 double h = 0.0;
                 for (int side = 0; side < 2; ++side) {
-                    const unsigned char k = kind[side == 0 ? fl : fu];
-                    const std::size_t nb = c + (side == 0 ? lo : hi);
-                    const bool interior = k == kInterior, boundary = (side == 0 ? lo : hi) == 0;
+                    const std::size_t f = side == 0 ? fl : fu, nb = c + (side == 0 ? lo : hi);
+                    const bool interior = kind[f] == kInterior;
                     double sum = 0.0;
                     for (int b = 0; b < 3; ++b) {
-                        const double other = interior ? u[b][nb] : boundary ? walls[a][side][b] : 0.0;
+                        const double other = interior ? u[b][nb] : wall_velocity(mesh.grid, walls, a, side, f, b);
                         sum += (other - u[b][c]) * (other - u[b][c]);
                     }
-                    h += (interior ? 0.5 * harmonic_mean(eta[c], eta[nb]) : 2.0 * eta[c]) * sum * inv_h2;
+                    // Each interior face's dissipation is shared by its two cells.
+                    const double eta_f = face_conductance(interior, eta[c], eta[nb], true);
+                    h += (interior ? 0.5 * eta_f : eta_f) * sum * inv_h2;
                 }
                 heat[c] += h;
             }
@@ -85,7 +86,7 @@ int TemperatureSolver::apply(const FlowMesh& mesh, const FlowSettings& settings,
         const double r = 1.5 * dt / (mesh.grid.h[a] * mesh.grid.h[a]);
         for (const MeshFace& f : mesh.faces[a]) {
             if (f.kind != kInterior || f.repeat || !active(f.lo) || !active(f.hi)) continue;
-            pattern_.couple(value, a, f, r * harmonic_mean(cl.lambda[f.lo], cl.lambda[f.hi]));
+            pattern_.couple(value, a, f, r * face_conductance(true, cl.lambda[f.lo], cl.lambda[f.hi], false));
         }
     }
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper> cg;  // Jacobi preconditioner

@@ -1,5 +1,14 @@
-// The temperature equation (14) without convection (docs/flow_solver.md Sect. 4), heating,
-// dissipation and conduction in one implicit system per step:
+// The temperature equation (14) without convection (docs/flow_solver.md Sect. 4).
+//
+//   solves      heating, dissipation and conduction of T in one implicit system per step
+//               (below), by Jacobi-preconditioned conjugate gradients for the change of T
+//   inputs      Phi, u, T per cell; eta, lambda, eps Phi of the closures at t^n; dt; the wall
+//               velocities (for the heating at walls)
+//   outputs     T and Phi T; the conjugate-gradient iterations
+//   invariants  T >= T_floor; positive data give positive T (an M-matrix); a state that does
+//               not change stays as it is
+//
+// The system:
 //     Phi T_new + dt eps Phi T_new - (3/2) dt div(lambda grad T_new) = Phi T* + (3/2) dt H,
 // with H the dissipation of the discrete viscous operator (half of eta_f ((u_nb - u)/h)^2 of each
 // interior face, all of 2 eta ((U_wall - u)/h)^2 of a wall face), eta, lambda, eps Phi from the

@@ -1,5 +1,7 @@
 #include "flow/velocity_gradient.hpp"
 
+#include "flow/diffusion_faces.hpp"
+
 namespace granseg {
 
 void velocity_gradient(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls,
@@ -16,12 +18,14 @@ void velocity_gradient(const FlowMesh& mesh, const FlowSettings& settings, const
                 const std::size_t c = nx * row + i, fl = ar.face0 + i, fu = fl + ar.face_step;
                 if (!mesh.inside[c]) continue;
                 for (int b = 0; b < 3; ++b) {
-                    auto value = [&](unsigned char k, long offset, int side) {
-                        if (k == kInterior) return Phi[c + offset] > Phi_vac ? u[b][c + offset] : u[b][c];
-                        return 2.0 * (offset == 0 ? walls[a][side][b] : 0.0) - u[b][c];
+                    // The value beyond a face: the neighbour's (the cell's own if the neighbour is
+                    // empty), or the no-slip ghost 2 U_wall - u of a wall.
+                    auto value = [&](std::size_t f, long offset, int side) {
+                        if (kind[f] == kInterior) return Phi[c + offset] > Phi_vac ? u[b][c + offset] : u[b][c];
+                        return 2.0 * wall_velocity(mesh.grid, walls, a, side, f, b) - u[b][c];
                     };
                     grad[3 * b + a][c] =
-                        mesh.active[a] ? (value(kind[fu], ar.hi_at(i), 1) - value(kind[fl], ar.lo_at(i), 0)) * inv_2h : 0.0;
+                        mesh.active[a] ? (value(fu, ar.hi_at(i), 1) - value(fl, ar.lo_at(i), 0)) * inv_2h : 0.0;
                 }
             }
         }

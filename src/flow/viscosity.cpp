@@ -16,12 +16,13 @@ void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, cons
             const double U_lo = 2.0 * r * walls[a][0][b], U_hi = 2.0 * r * walls[a][1][b];
             const double *Phi = state.Phi.data(), *u = state.u[b].data(), *eta = eta_in.data();
             const unsigned char *in = mesh.inside.data(), *kind = mesh.face_kind[a].data();
+            const Grid* grid = &mesh.grid;
             double* rhs = work.data();
             mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
                 const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
                 double value = Phi[c] * u[c];
-                if (kind[fl] == kWallBelow && ar.lo_at(i) == 0) value += U_lo * eta[c];
-                if (kind[fu] == kWallAbove && ar.hi_at(i) == 0) value += U_hi * eta[c];
+                if (kind[fl] == kWallBelow && on_domain_boundary(*grid, a, fl)) value += U_lo * eta[c];
+                if (kind[fu] == kWallAbove && on_domain_boundary(*grid, a, fu)) value += U_hi * eta[c];
                 rhs[c] = in[c] && Phi[c] > Phi_vac ? value : 0.0;
             });
             lines.solve(work);

@@ -1,5 +1,13 @@
-// Implicit viscosity (eqs. 9-11; docs/flow_solver.md Sect. 4): with the asymmetric stress
-// eta grad u every velocity component obeys
+// Implicit viscosity split by axes (eqs. 9-11; docs/flow_solver.md Sect. 4), the explicit
+// step's default.
+//
+//   solves      Phi (u_new - u)/dt = div(eta grad u_new), one axis after the other, by
+//               tridiagonal line solves
+//   inputs      Phi, u, eta per cell, dt, the velocities of the domain-boundary walls
+//   outputs     u and Phi u
+//   invariants  empty cells at rest; the line systems are M-matrices
+//
+// With the asymmetric stress eta grad u every velocity component obeys
 //     Phi (u_new - u)/dt = sum_axis d/dx_a (eta d u_new/dx_a),
 // which has no mixed derivatives; the axes are taken one after the other (Lie/ADI splitting),
 // each as tridiagonal line solves (flow/diffusion_lines.hpp). No-slip walls, moving walls of the
