@@ -1,8 +1,9 @@
 # Cost of the flow solver on the tumbler-flow drum, both time-stepping modes (make bench).
 # needs: bench_flow
 # Data: bench_flow.dat (semi_implicit cells_per_diameter threads inside_cells ns_per_cell_step dt
-#       steps_per_drum_second wall_per_drum_second seconds_for_25s newton_per_solve krylov_per_newton
-#       share_closures share_convection share_pressure share_viscosity share_temperature ratio_explicit_to_semi).
+#       steps_per_drum_second wall_per_drum_second seconds_for_25s solves_per_step newton_per_solve
+#       krylov_per_newton temperature_cg_per_step, share_<stage> for the eight stages of FlowStage
+#       in flow/flow_solver.hpp, ratio_explicit_to_semi); the plots use columns 2, 5, 7 and 8.
 set terminal pngcairo size 1500,480 font "Sans,11" noenhanced
 set output outfile
 set multiplot layout 1,3 title "Flow solver on the tumbler-flow drum, from its initial state: medians of 5 windows"

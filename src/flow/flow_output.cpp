@@ -107,7 +107,8 @@ std::string flow_vtk(const FlowSolver& s) {
     return out.str();
 }
 
-void append_flow_counts(const FlowCounters& counts, std::vector<std::string>& columns, std::vector<double>& values) {
+void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values) {
+    const FlowCounters& counts = solver.counters();
     for (int b = 0; b < kStepBounds; ++b) {
         columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
         values.push_back(static_cast<double>(counts.set_by[b]));
@@ -117,6 +118,10 @@ void append_flow_counts(const FlowCounters& counts, std::vector<std::string>& co
                                       std::pair{"temperature_iterations", counts.temperature_iterations}}) {
         columns.push_back(name);
         values.push_back(static_cast<double>(count));
+    }
+    for (int k = 0; k < kFlowStages; ++k) {
+        columns.push_back(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
+        values.push_back(solver.timers().seconds[k]);
     }
 }
 

@@ -63,10 +63,11 @@ inline double flowing_layer_thickness(const DrumState& d, double R) {
     return d.flowing_area / (2.0 * std::sqrt(R * R - d.surface_distance * d.surface_distance));
 }
 
-/// Appends the solver's counts to a summary row: steps_X, the steps whose dt the bound X set
-/// (docs/flow_solver.md Sect. 3), and the semi-implicit step's pressure_solves, newton and krylov
-/// iterations (0 in the explicit step) and the temperature solves' conjugate-gradient iterations.
-void append_flow_counts(const FlowCounters& counts, std::vector<std::string>& columns, std::vector<double>& values);
+/// Appends the solver's work to a summary row: steps_X, the steps whose dt the bound X set
+/// (docs/flow_solver.md Sect. 3), the semi-implicit step's pressure_solves, newton and krylov
+/// iterations (0 in the explicit step), the temperature solves' conjugate-gradient iterations,
+/// and seconds_S, the wall-clock seconds of each stage S of the step (FlowStage).
+void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values);
 
 /// Fits a line (total least squares) through the points where Phi crosses Phi_level between
 /// neighbouring inside cells within `radius` of the axis, and compares it with the horizontal

@@ -42,7 +42,8 @@ struct FlowSettings {
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
     double Phi_vacuum = 1e-12;  // cells with Phi <= this are empty: u = 0, T = T_floor
     double dt_min = 1e-9;       // s; a smaller step stops the run with InvariantError
-    double dt_max = 1e-3;       // s
+    double dt_max = 2e-3;       // s (the drum's angle against dt_max: docs/flow_solver.md)
+    double pressure_tolerance = 1e-2;  // semi-implicit: Newton stops at this share of the step's largest explicit mass change
     double phi_hat = 0.5;       // small-particle share used for Phi_rcp, Phi_co when no phi field is set
 };
 

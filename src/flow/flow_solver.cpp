@@ -15,7 +15,20 @@
 
 namespace granseg {
 
-FlowSolver::Stopwatch::Stopwatch(double& account) : account_(account), start_(std::chrono::steady_clock::now()) {}
+const char* flow_stage_name(FlowStage stage) {
+    static const char* const names[kFlowStages] = {"closures",       "forces",         "predictor", "viscosity",
+                                                   "pressure_solve", "pressure_faces", "transport", "temperature"};
+    return names[static_cast<int>(stage)];
+}
+
+double FlowTimers::total() const {
+    double sum = 0.0;
+    for (double s : seconds) sum += s;
+    return sum;
+}
+
+FlowSolver::Stopwatch::Stopwatch(FlowTimers& timers, FlowStage stage)
+    : account_(timers.seconds[static_cast<int>(stage)]), start_(std::chrono::steady_clock::now()) {}
 
 FlowSolver::Stopwatch::~Stopwatch() {
     account_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -118,7 +131,7 @@ double FlowSolver::step(double t_end) {
 }
 
 void FlowSolver::update_closures() {
-    Stopwatch watch(timers_.closures);
+    Stopwatch watch(timers_, FlowStage::closures);
     cell_potential(mesh_, frame_, t_, potential_.cell);
     compute_primitives(mesh_, material_, settings_, phi_hat_, t_, state_, closures_);
 }
@@ -130,15 +143,19 @@ StepSize FlowSolver::explicit_step(double t_end) {
 }
 
 StepSize FlowSolver::explicit_convection(double t_end) {
-    Stopwatch watch(timers_.convection);
-    for (int a = 0; a < 3; ++a) {
-        if (!mesh_.active[a]) continue;
-        face_loads(a);
-        hllc_face_fluxes(mesh_, a, state_, closures_, potential_, loads_[a], faces_[a]);
+    StepSize size{};
+    {
+        Stopwatch watch(timers_, FlowStage::forces);
+        for (int a = 0; a < 3; ++a) {
+            if (!mesh_.active[a]) continue;
+            face_loads(a);
+            hllc_face_fluxes(mesh_, a, state_, closures_, potential_, loads_[a], faces_[a]);
+        }
+        effective_pressure(mesh_, faces_, closures_);
+        const StepRates rates = explicit_step_rates(mesh_, state_, closures_, faces_);
+        size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
     }
-    effective_pressure(mesh_, faces_, closures_);
-    const StepRates rates = explicit_step_rates(mesh_, state_, closures_, faces_);
-    const StepSize size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
+    Stopwatch watch(timers_, FlowStage::predictor);
     explicit_update(mesh_, settings_, frame_, source_, t_, size.dt, faces_, state_);
     return size;
 }
@@ -149,7 +166,7 @@ void FlowSolver::face_loads(int a) {
 }
 
 void FlowSolver::viscosity(double dt) {
-    Stopwatch watch(timers_.viscosity);
+    Stopwatch watch(timers_, FlowStage::viscosity);
     if (viscosity_solve(settings_) == ViscositySolve::split) {
         implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, line_rhs_, state_);
         return;
@@ -159,7 +176,7 @@ void FlowSolver::viscosity(double dt) {
 }
 
 void FlowSolver::temperature(double dt) {
-    Stopwatch watch(timers_.temperature);
+    Stopwatch watch(timers_, FlowStage::temperature);
     counters_.temperature_iterations += temperature_.apply(mesh_, settings_, walls_, dt, closures_, heat_, state_);
 }
 

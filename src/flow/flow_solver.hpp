@@ -41,7 +41,8 @@
 //       Phi after the step, the fluxes of momentum and Phi T; again (at most 4 solves) while
 //       the pressure reversed faces onto a cell holding clearly less; then the outflow and
 //       compaction bounds checked on these fluxes;
-//   S5. a broken bound: Phi, Phi u, Phi T and dp back to t^n, half the dt, again from S3;
+//   S5. a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the dt,
+//       again from S3;
 //   S6. transport: Phi_new = Phi - dt div M exactly, Phi u and Phi T with the donors' values
 //       (transport_update, flow/convection.hpp);
 //   S7. the velocity change since u* diffused by the viscosity solve of S3 with walls at rest
@@ -63,13 +64,13 @@
 //   S2     Phi, u, T, p, c, Phi_co, psi; Phi u, Phi T      psi (faces), loads_, pf (p', p - p', D;
 //                                                          reversed = 0), faces p, eta, lambda,
 //                                                          eps Phi; m_start_, u_start_, E_start_
-//   S3     pf, Phi, u (a repeat: the last attempt's u*),   faces (M = 0), Phi u, Phi T, u, T (Phi with
-//          c, u_start_, eta                                sources), force_part_; then u, Phi u (u*;
+//   S3     pf, Phi, u, c, u_start_, eta                    faces (M = 0), Phi u, Phi T, u, T (Phi with
+//                                                          sources), force_part_; then u, Phi u (u*;
 //                                                          line_rhs_: split solves)
 //   S4     Phi, u, T, p, Phi_rcp, Phi_co, force_part_,     pf (U*, donor, K, flux, reversed),
 //          pf, dp_                                         mass_change_, dp_, faces, dust_scale_,
 //                                                          Phi_after_
-//   S5     Phi_before_, m_start_, E_start_                 Phi, Phi u, Phi T, dp_ (S3 rebuilds u, T)
+//   S5     Phi_before_, m_start_, u_start_, E_start_       Phi, Phi u, u, Phi T, dp_, pf reversed
 //   S6     Phi, Phi u, Phi T, u, faces                     u_star_; Phi, Phi u, Phi T, u, T
 //   S7     u, u_star_, Phi_before_, Phi, eta               velocity_change_, u, Phi u (increment_,
 //                                                          line_rhs_: split solves)
@@ -102,10 +103,20 @@
 
 namespace granseg {
 
-/// Wall-clock seconds spent in the phases of step() (for benchmarks); `pressure` is the part of
-/// `convection` spent in the pressure solves of the semi-implicit step.
+/// The stages of step() whose wall-clock time FlowTimers keeps (each second counted once):
+/// closures (stage 0); forces: loads, face forces or HLLC fluxes, dt (E1-E2, S1-S2); predictor: the
+/// explicit update with the forces (E3, S3); viscosity (E4, S3, S7); pressure_solve (S4's Newton
+/// solves); pressure_faces (the rest of S4 and S5); transport (S6); temperature.
+enum class FlowStage { closures, forces, predictor, viscosity, pressure_solve, pressure_faces, transport, temperature };
+constexpr int kFlowStages = 8;
+/// The stage's name as in the output tables ("closures", "forces", ...).
+const char* flow_stage_name(FlowStage stage);
+
+/// Wall-clock seconds spent in each FlowStage (for benchmarks and run summaries).
 struct FlowTimers {
-    double closures = 0, convection = 0, viscosity = 0, temperature = 0, pressure = 0;
+    std::array<double, kFlowStages> seconds{};
+    double operator[](FlowStage stage) const { return seconds[static_cast<int>(stage)]; }
+    double total() const;
 };
 
 /// The work of the steps (for benchmarks and run summaries): pressure solves, their Newton steps
@@ -166,10 +177,10 @@ public:
     const FlowCounters& counters() const { return counters_; }
 
 private:
-    /// Adds the wall-clock time of its scope to one of timers_.
+    /// Adds the wall-clock time of its scope to one stage of timers_.
     class Stopwatch {
     public:
-        explicit Stopwatch(double& account);
+        Stopwatch(FlowTimers& timers, FlowStage stage);
         ~Stopwatch();
     private:
         double& account_;
@@ -210,8 +221,9 @@ private:
     bool pressure_correct(double dt);
     /// S4. U*, donors, K of every face and the explicit mass change r_c.
     void face_predictor(double dt);
-    /// S4. The pressure solve for dp_ (counted); whether it converged.
-    bool solve_pressure();
+    /// S4. The pressure solve for dp_ (counted; `repeat`: dp_ solved this step's equation already);
+    /// whether it converged.
+    bool solve_pressure(bool repeat);
     /// S4. Corrected faces, dust cap, Phi after the step and the fluxes; returns how many faces
     /// the pressure reversed (marked for the smaller donor).
     long corrected_fluxes(double dt);

@@ -78,7 +78,8 @@ void PressureSolver::newton_update(const FlowMesh& mesh, const Material& materia
 
 PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
                                          const CellClosures& cl, const PressureFaces& faces,
-                                         const std::vector<double>& change, double accuracy, std::vector<double>& dp) {
+                                         const std::vector<double>& change, double accuracy, bool solved_guess,
+                                         std::vector<double>& dp) {
     const long rows = J_.rows();
     double* value = laplacian_.valuePtr();
     // The coupling part: K_f on both diagonals, -K_f off the diagonal.
@@ -132,8 +133,10 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     for (;; ++stats.newton) {
         stats.residual = F_.lpNorm<Eigen::Infinity>();
         // At least one Newton step (a lagged pressure would not damp the acoustic waves), unless
-        // the residual is already at round-off (a bed at rest then stays exactly where it is).
-        if (stats.residual <= tolerance + resolution && (stats.newton > 0 || stats.residual <= kRoundOff)) {
+        // the guess is this step's implicit pressure already or the residual is at round-off (a
+        // bed at rest then stays exactly where it is).
+        if (stats.residual <= tolerance + resolution &&
+            (stats.newton > 0 || solved_guess || stats.residual <= kRoundOff)) {
             stats.converged = true;
             break;
         }

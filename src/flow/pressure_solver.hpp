@@ -65,10 +65,13 @@ public:
 
     /// Solves F(dp) = 0 (header comment) for dp (one value per grid cell, the guess on entry; 0
     /// outside). faces[a].coupling: per face the coupling K_f (0 on walls and faces without
-    /// material); change: r_c per cell. Newton stops when max |F_c| <= accuracy max |r_c| + round-off.
+    /// material); change: r_c per cell. Newton stops when max |F_c| <= accuracy max |r_c| + round-off,
+    /// after at least one Newton step unless `solved_guess` (the guess already solves this step's
+    /// equation for nearly the same K: a repeat after reversed faces) or F is at round-off.
     PressureSolveStats solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
                              const CellClosures& closures, const PressureFaces& faces,
-                             const std::vector<double>& change, double accuracy, std::vector<double>& dp);
+                             const std::vector<double>& change, double accuracy, bool solved_guess,
+                             std::vector<double>& dp);
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;

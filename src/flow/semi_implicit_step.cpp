@@ -9,12 +9,11 @@
 #include "flow/primitives.hpp"
 #include "flow/viscosity.hpp"
 
+#include <algorithm>
+
 namespace granseg {
 
 namespace {
-/// The pressure equation is solved to this share of the step's largest explicit mass change
-/// (and to round-off in a bed that does not change): errors far below the scheme's.
-constexpr double kPressureAccuracy = 1e-6;
 /// Pressure solves per step attempt: the first, and repeats after faces reversed by the pressure
 /// took the smaller donor (semi_implicit.hpp).
 constexpr int kDonorPasses = 4;
@@ -38,7 +37,7 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
 }
 
 StepSize FlowSolver::semi_implicit_dt(double t_end) {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::forces);
     // The rates of the last step's faces: this step's depend on dt.
     const StepRates rates = material_step_rates(mesh_, state_, closures_, faces_, steps_ == 0);
     StepSize size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
@@ -47,7 +46,7 @@ StepSize FlowSolver::semi_implicit_dt(double t_end) {
 }
 
 void FlowSolver::forces_at_start() {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::forces);
     for (int a = 0; a < 3; ++a) {
         if (!mesh_.active[a]) continue;
         face_loads(a);
@@ -67,12 +66,12 @@ StepSize FlowSolver::predict_and_correct(StepSize size) {
 }
 
 void FlowSolver::keep_start_state() {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::predictor);
     m_start_ = state_.m, u_start_ = state_.u, E_start_ = state_.E;
 }
 
 void FlowSolver::predictor_forces(double dt) {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::predictor);
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
     explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, state_);
@@ -82,32 +81,35 @@ void FlowSolver::predictor_forces(double dt) {
 }
 
 bool FlowSolver::pressure_correct(double dt) {
-    Stopwatch watch(timers_.convection);
     for (int pass = 1;; ++pass) {
         face_predictor(dt);
-        if (!solve_pressure()) return false;
+        if (!solve_pressure(pass > 1)) return false;
         // Faces the pressure reversed onto a cell with clearly less material took the smaller
         // donor: solve again, up to kDonorPasses times.
-        if (corrected_fluxes(dt) == 0 || pass == kDonorPasses)
+        if (corrected_fluxes(dt) == 0 || pass == kDonorPasses) {
+            Stopwatch watch(timers_, FlowStage::pressure_faces);
             return step_within_bounds(mesh_, dt, state_.Phi, closures_, faces_);
+        }
     }
 }
 
 void FlowSolver::face_predictor(double dt) {
+    Stopwatch watch(timers_, FlowStage::pressure_faces);
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) pressure_coupling(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
     explicit_mass_change(mesh_, dt, pressure_, mass_change_);
 }
 
-bool FlowSolver::solve_pressure() {
-    Stopwatch watch(timers_.pressure);
-    pressure_stats_ =
-        pressure_solver_.solve(mesh_, material_, state_, closures_, pressure_, mass_change_, kPressureAccuracy, dp_);
+bool FlowSolver::solve_pressure(bool repeat) {
+    Stopwatch watch(timers_, FlowStage::pressure_solve);
+    pressure_stats_ = pressure_solver_.solve(mesh_, material_, state_, closures_, pressure_, mass_change_,
+                                             settings_.pressure_tolerance, repeat, dp_);
     ++counters_.pressure_solves, counters_.newton += pressure_stats_.newton, counters_.krylov += pressure_stats_.krylov;
     return pressure_stats_.converged;
 }
 
 long FlowSolver::corrected_fluxes(double dt) {
+    Stopwatch watch(timers_, FlowStage::pressure_faces);
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) corrected_face_velocities(mesh_, a, dt, state_, closures_, pressure_[a], dp_, faces_[a]);
     cap_dust_outflow(mesh_, dt, state_, closures_, dust_scale_, faces_);
@@ -122,11 +124,12 @@ long FlowSolver::corrected_fluxes(double dt) {
 }
 
 StepSize FlowSolver::restart_with_half_dt(StepSize size) {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::pressure_faces);
     ++counters_.repeated;
     size = {0.5 * size.dt, StepBound::halved};
-    state_.Phi = Phi_before_, state_.m = m_start_, state_.E = E_start_;
+    state_.Phi = Phi_before_, state_.m = m_start_, state_.u = u_start_, state_.E = E_start_;
     mesh_.for_each_inside([&](std::size_t c) { dp_[c] = 0.0; });
+    for (AxisPressureFaces& P : pressure_) std::fill(P.reversed.begin(), P.reversed.end(), 0);
     if (!(size.dt >= settings_.dt_min))
         throw InvariantError("flow: the semi-implicit step fell below dt_min = " + format_number(settings_.dt_min) +
                              " s at t = " + format_number(t_) + " s: " +
@@ -137,13 +140,13 @@ StepSize FlowSolver::restart_with_half_dt(StepSize size) {
 }
 
 void FlowSolver::transport(double dt) {
-    Stopwatch watch(timers_.convection);
+    Stopwatch watch(timers_, FlowStage::transport);
     u_star_ = state_.u;
     transport_update(mesh_, settings_, dt, faces_, state_);
 }
 
 void FlowSolver::diffuse_increments(double dt) {
-    Stopwatch watch(timers_.viscosity);
+    Stopwatch watch(timers_, FlowStage::viscosity);
     const double Phi_vac = settings_.Phi_vacuum;
     mesh_.for_each_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) velocity_change_[b][c] = state_.u[b][c] - u_star_[b][c];

@@ -63,6 +63,7 @@ void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const Ce
 TemperatureSolver::TemperatureSolver(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)) {
     rhs_.setZero(pattern_.matrix.rows());
     T_.setZero(pattern_.matrix.rows());
+    change_.setZero(pattern_.matrix.rows());
 }
 
 int TemperatureSolver::apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
@@ -94,7 +95,10 @@ int TemperatureSolver::apply(const FlowMesh& mesh, const FlowSettings& settings,
     cg.setMaxIterations(kMaxIterations);
     cg.compute(pattern_.matrix);
     rhs_ -= pattern_.matrix * T_;  // the residual of T*: the right-hand side of dT
-    T_ += cg.solve(rhs_);
+    // The last step's change is the guess: in a steady flow heating, dissipation and conduction
+    // change T by much the same amount step after step (the tolerance stays relative to rhs_).
+    change_ = cg.solveWithGuess(rhs_, change_);
+    T_ += change_;
     if (cg.info() != Eigen::Success && !(cg.error() <= kAcceptable))
         throw InvariantError("flow: the temperature equation did not converge in " + std::to_string(kMaxIterations) +
                              " iterations (relative residual " + format_number(cg.error()) + ")");

@@ -53,7 +53,7 @@ public:
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; values rewritten each step
-    Eigen::VectorXd rhs_, T_;
+    Eigen::VectorXd rhs_, T_, change_;  // per row: right-hand side, T, the change of T (the next guess)
 };
 
 }  // namespace granseg

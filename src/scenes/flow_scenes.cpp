@@ -25,6 +25,7 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.Phi_vacuum = scene.number(s, "Phi_vacuum", Range::open(0, 1e-3), f.Phi_vacuum);
     f.dt_min = scene.number(s, "dt_min", Range::open(0, 1), f.dt_min);
     f.dt_max = scene.number(s, "dt_max", Range::open(0, 10), f.dt_max);
+    f.pressure_tolerance = scene.number(s, "pressure_tolerance", Range::open(0, 1), f.pressure_tolerance);
     if (mixture) f.phi_hat = scene.number(s, "phi_hat", Range::closed(0, 1), f.phi_hat);
     if (!(f.dt_min < f.dt_max)) scene.fail(s, "dt_min", format_number(f.dt_min) + " >= dt_max", "dt_min < dt_max");
     return f;

@@ -70,12 +70,12 @@ struct TumblerFlow : SceneJob {
         std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
                                    static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
                                    layer.std_dev()};
-        append_flow_counts(solver.counters(), columns, values);
+        append_flow_work(solver, columns, values);
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
                         format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
                         "samples; mass_change relative; steps_X: steps whose dt the bound X set (docs/flow_solver.md "
-                        "Sect. 3); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts");
+                        "Sect. 3); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step");
         summary.row(values);
         out.add("history.dat", history);
         out.add("summary.dat", summary);

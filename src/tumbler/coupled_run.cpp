@@ -138,7 +138,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                static_cast<double>(contrast.bins), tumbler.largest_bulk_clip(), tumbler.largest_correction(),
                                tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
                                static_cast<double>(inside_cells(grid))};
-    append_flow_counts(flow.counters(), columns, values);
+    append_flow_work(flow, columns, values);
     for (const char* c : {"layer_mean", "layer_std", "axis"}) columns.push_back(c);
     for (double v : {layer.mean(), layer.std_dev(), axis}) values.push_back(v);
     DataTable summary(columns);
@@ -149,7 +149,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "samples; axis: small-particle share within " + format_number(kAxisShare) +
                     " D of the axis at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
                     " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
-                    "transport, segregation sub-steps, closures from phi_hat); flow counts: flow_output.hpp append_flow_counts");
+                    "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work");
     summary.row(values);
     out.add("history.dat", history);
     out.add("summary.dat", summary);

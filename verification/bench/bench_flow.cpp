@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 using namespace granseg;
@@ -31,7 +32,7 @@ constexpr double kRadius = 0.05, kFillHeight = 0.075, kRunLength = 25.0;
 constexpr int kWarmUp = 20;  // steps before the window: caches, the semi-implicit start-up of dt
 
 struct Sample {
-    double seconds, drum_seconds, share[5], newton, krylov;
+    double seconds, drum_seconds, share[kFlowStages], solves, newton, krylov, temperature;
     std::size_t cells;
     long steps;
 };
@@ -58,16 +59,14 @@ Sample window(TimeStepping mode, int n, int steps) {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.drum_seconds = solver.time() - t0;
     const FlowTimers& after = solver.timers();
-    const double parts[5] = {after.closures - before.closures, after.convection - before.convection - (after.pressure - before.pressure),
-                             after.pressure - before.pressure, after.viscosity - before.viscosity,
-                             after.temperature - before.temperature};
-    double total = 0.0;
-    for (double p : parts) total += p;
-    for (int k = 0; k < 5; ++k) r.share[k] = parts[k] / total;
+    const double total = after.total() - before.total();
+    for (int k = 0; k < kFlowStages; ++k) r.share[k] = (after.seconds[k] - before.seconds[k]) / total;
     const FlowCounters& c = solver.counters();
     const double solves = static_cast<double>(c.pressure_solves - counted.pressure_solves);
+    r.solves = solves / steps;
     r.newton = solves > 0 ? (c.newton - counted.newton) / solves : 0.0;
     r.krylov = c.newton > counted.newton ? static_cast<double>(c.krylov - counted.krylov) / (c.newton - counted.newton) : 0.0;
+    r.temperature = static_cast<double>(c.temperature_iterations - counted.temperature_iterations) / steps;
     r.cells = 0;
     for (std::size_t q = 0; q < g.cells(); ++q) r.cells += g.is_inside(q) ? 1 : 0;
     r.steps = steps;
@@ -78,10 +77,12 @@ Sample window(TimeStepping mode, int n, int steps) {
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    DataTable table({"semi_implicit", "cells_per_diameter", "threads", "inside_cells", "ns_per_cell_step", "dt",
-                     "steps_per_drum_second", "wall_per_drum_second", "seconds_for_25s", "newton_per_solve",
-                     "krylov_per_newton", "share_closures", "share_convection", "share_pressure", "share_viscosity",
-                     "share_temperature", "ratio_explicit_to_semi"});
+    std::vector<std::string> columns{"semi_implicit", "cells_per_diameter", "threads", "inside_cells", "ns_per_cell_step", "dt",
+                                     "steps_per_drum_second", "wall_per_drum_second", "seconds_for_25s", "solves_per_step",
+                                     "newton_per_solve", "krylov_per_newton", "temperature_cg_per_step"};
+    for (int k = 0; k < kFlowStages; ++k) columns.push_back(std::string("share_") + flow_stage_name(static_cast<FlowStage>(k)));
+    columns.push_back("ratio_explicit_to_semi");
+    DataTable table(columns);
     table.comment("tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps) from its initial state (bed at rest, before the first "
                   "avalanche); medians of " + std::to_string(kRuns) + " windows; ratio: explicit wall per drum second over "
                   "this row's (semi-implicit rows)");
@@ -93,22 +94,26 @@ int main(int argc, char** argv) {
             omp_set_num_threads(threads);
             double explicit_wall = 0.0;
             for (const TimeStepping mode : {TimeStepping::explicit_waves, TimeStepping::semi_implicit}) {
-                std::vector<double> ns, dt, share[5], newton, krylov;
+                std::vector<double> ns, dt, share[kFlowStages], solves, newton, krylov, temperature;
                 Sample last{};
                 for (int run = 0; run < kRuns; ++run) {
                     last = window(mode, n, steps);
                     ns.push_back(1e9 * last.seconds / (static_cast<double>(last.cells) * last.steps));
                     dt.push_back(last.drum_seconds / last.steps);
-                    for (int k = 0; k < 5; ++k) share[k].push_back(last.share[k]);
-                    newton.push_back(last.newton), krylov.push_back(last.krylov);
+                    for (int k = 0; k < kFlowStages; ++k) share[k].push_back(last.share[k]);
+                    solves.push_back(last.solves), newton.push_back(last.newton), krylov.push_back(last.krylov);
+                    temperature.push_back(last.temperature);
                 }
                 const double step = verify::median(dt), cost = verify::median(ns) * 1e-9 * last.cells;  // s per step
                 const double wall = cost / step, semi = mode == TimeStepping::semi_implicit;
                 if (!semi) explicit_wall = wall;
                 const double ratio = semi ? explicit_wall / wall : 1.0;
-                table.row({semi, static_cast<double>(n), static_cast<double>(threads), static_cast<double>(last.cells),
-                           verify::median(ns), step, 1.0 / step, wall, kRunLength * wall, verify::median(newton), verify::median(krylov),
-                           verify::median(share[0]), verify::median(share[1]), verify::median(share[2]), verify::median(share[3]), verify::median(share[4]), ratio});
+                std::vector<double> row{semi, static_cast<double>(n), static_cast<double>(threads), static_cast<double>(last.cells),
+                                        verify::median(ns), step, 1.0 / step, wall, kRunLength * wall, verify::median(solves),
+                                        verify::median(newton), verify::median(krylov), verify::median(temperature)};
+                for (const auto& stage : share) row.push_back(verify::median(stage));
+                row.push_back(ratio);
+                table.row(row);
                 std::printf("%-14s %-6d %-7d %-8zu %-9.0f %-9.3g %-10.4g %-10.3g %-9.3g %-7.2f %-7.1f %-6.2f\n",
                             choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, verify::median(ns), step, 1.0 / step,
                             wall, kRunLength * wall, verify::median(newton), verify::median(krylov), ratio);
