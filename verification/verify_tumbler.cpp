@@ -59,7 +59,7 @@ constexpr double kSameFlowTol = 1e-12;
 //    layer the streamlines converge and diverge along the surface: an extension rate eps next to
 //    the shear rate gamma tilts the maximum-shear planes by (1/2) atan(2 eps/gamma) ~ eps/gamma ~
 //    (layer thickness)/(surface length) ~ 1.5 cm / 9 cm, 10 degrees (docs/sect4.2_tumbler.md,
-//    section 4); most flowing cells lie in the middle of the surface where eps is smaller, so the
+//    "What verify_tumbler checks"); most flowing cells lie in the middle of the surface where eps is smaller, so the
 //    median deviation from 90 degrees is at most that.
 constexpr double kMedianDeviation = 10.0;  // degrees
 // Frame: the lab gradient R (G + W) R^T differs from the drum one G by the rotation's spin W

@@ -19,7 +19,7 @@
 //   3. segregation sub-step with Phi and T frozen (eq. 52b), when due (below): per cell
 //      a = S^sl = -S0 sqrt(T) (d_s . g) d_s (eq. 46) with T from the flow and d_s (Sect. 2.3) from
 //      the flow's velocity gradient and its velocity, both relative to the drum, so the rotation
-//      of the frame does not enter d_s (research/model.md 3.4); a = 0 where Phi < Phi_min
+//      of the frame does not enter d_s (docs/assumptions.md D3, C5); a = 0 where Phi < Phi_min
 //      (assumption C2). SegregationSolver::advance (split over the axes, the sign-robust flux of
 //      eq. 63, zero flux on every wall face) covers the time since the last sub-step in steps of
 //      its own CFL bound;

@@ -51,7 +51,7 @@ constexpr const char* kKinematicScene = "figures/tumbler_kinematic.toml";
 // Issue 11: the segregation part may cost at most a fifth of the flow's.
 constexpr double kRatio = 1.2;
 // d. The pattern after 25 s, stated before the first full-resolution run (docs/sect4.2_tumbler.md,
-// section 5). The flow is the same as verify_tumbler's up to resolution; at 100 cells per diameter
+// "Results"). The flow is the same as verify_tumbler's up to resolution; at 100 cells per diameter
 // the donor-cell bulk transport smears the sorted bands with a third of the numerical diffusion
 // (h |u|/2) of the 32-cell run, while the segregation flux does not depend on h, so the pattern is
 // at least as strong as verify_tumbler's at 32 cells (ring 0.58, periphery 0.38, index 0.22): small

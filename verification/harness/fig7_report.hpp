@@ -20,7 +20,7 @@
 namespace granseg::verify {
 
 /// The order assumed for two grids: the formal order of the coupled scheme, first in space and
-/// time (donor cell, Lie splitting; docs/sect4.2_tumbler.md, "Limits and what is left").
+/// time (donor cell, Lie splitting; docs/sect4.2_tumbler.md, "What to try next").
 constexpr double kFormalOrder = 1.0;
 
 struct Fig7Estimate {

@@ -1,7 +1,7 @@
 // Solution verification: how far a quantity computed on the finest of a few grids lies from the
 // same model's h -> 0 value (Roache's grid convergence index, GCI; the three-grid procedure of
 // Celik et al., J. Fluids Eng. 130:078001, 2008), restated in docs/sect4.2_tumbler.md,
-// section 6.
+// section "Results".
 //
 // Grids 1 (finest) to 3 (coarsest) with cell sizes h1 < h2 < h3, values f1, f2, f3,
 // e21 = f2 - f1, e32 = f3 - f2, r21 = h2/h1, r32 = h3/h2:

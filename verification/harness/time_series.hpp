@@ -1,6 +1,6 @@
 // The sampling error of a drum diagnostic recorded over time (history.dat): a difference between
 // two runs smaller than it is noise, not a trend of the grid (docs/sect4.2_tumbler.md,
-// section 6).
+// section "Results").
 #pragma once
 
 #include <vector>
