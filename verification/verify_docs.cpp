@@ -21,10 +21,6 @@
 //     every generated block with one digit changed must differ from its copy; every recorded
 //     figure with one data digit changed must get another fingerprint; and the history and
 //     outside-reference detectors must flag samples of what they look for.
-// The pages listed in kPendingPages are not yet held to the history and outside-reference rules
-// (they are being rewritten); the table names them, and a pending page that is already clean
-// fails, so that the list only shrinks.
-//
 // Run: build/verification/verify_docs [--data DIR]   (make verify runs it after every other
 // verification program, whose results and data files some blocks and the figure check read;
 // about 20 s, most of it the tutorial's blocks). Two more modes, used by make targets:
@@ -54,11 +50,6 @@ using namespace granseg::verify::docs;
 
 namespace {
 
-// Pages whose history has not yet moved to docs/history.md: they are rewritten together with the
-// flow step and the Fig. 7 study. Empty this list as they are.
-const std::vector<std::string> kPendingPages = {"docs/flow_solver.md"};
-// Source files whose comments still refer outside the repository, for the same reason.
-const std::vector<std::string> kPendingSources = {};
 // Seconds one command block may take before it counts as failed.
 constexpr int kBlockTimeout = 300;
 // A command block slower than this is named in the table (make verify's time budget).
@@ -71,10 +62,6 @@ struct Repository {
     std::vector<std::string> pages;  // relative to root: README.md, docs/*.md
 };
 
-bool pending(const std::vector<std::string>& list, const std::string& file) {
-    return std::find(list.begin(), list.end(), file) != list.end();
-}
-
 std::string finding_line(const Finding& f) { return "  line " + std::to_string(f.line) + ": " + f.what + ": " + f.text; }
 
 /// Fresh output of the program that writes table NAME, if it has run.
@@ -86,20 +73,13 @@ fs::path fresh_table(const Repository& repo, const std::string& name) {
 
 /// History, outside references and links of one page.
 void check_hygiene(CheckTable& t, const Repository& repo, const std::string& page, const std::string& text) {
-    const bool is_pending = pending(kPendingPages, page);
     const auto history = history_findings(text), outside = outside_references(text);
-    if (page != "docs/history.md" && !is_pending) {
+    if (page != "docs/history.md") {
         t.count(page + ": lines with a date, commit hash or machine", static_cast<long>(history.size()), 0);
         for (const auto& f : history) t.note(finding_line(f));
     }
-    if (!is_pending) {
-        t.count(page + ": references outside the repository", static_cast<long>(outside.size()), 0);
-        for (const auto& f : outside) t.note(finding_line(f));
-    } else {
-        t.note("PENDING " + page + " (kPendingPages): history and outside-reference checks not applied; " +
-               std::to_string(history.size()) + " history lines, " + std::to_string(outside.size()) + " outside references");
-        t.at_least(page + " (pending): history lines or outside references left", static_cast<long>(history.size() + outside.size()), 1);
-    }
+    t.count(page + ": references outside the repository", static_cast<long>(outside.size()), 0);
+    for (const auto& f : outside) t.note(finding_line(f));
     const auto links = broken_links(text, (repo.root / page).parent_path(), repo.root);
     t.count(page + ": links not leading to a file of the repository", static_cast<long>(links.size()), 0);
     for (const auto& f : links) t.note(finding_line(f));
@@ -200,10 +180,6 @@ void check_sources(CheckTable& t, const Repository& repo) {
             const std::string rel = e.path().lexically_relative(repo.root).generic_string();
             const auto found = outside_references(read_text(e.path()));
             ++files;
-            if (pending(kPendingSources, rel)) {
-                t.note("PENDING " + rel + " (kPendingSources): " + std::to_string(found.size()) + " outside references");
-                continue;
-            }
             references += static_cast<long>(found.size());
             for (const auto& f : found) t.note(rel + finding_line(f));
         }
@@ -332,7 +308,6 @@ int main(int argc, char** argv) {
         check_generated(t, repo, page, text, shown, generated_mutants_equal);
     }
     fs::remove_all(scratch);
-    for (const std::string& p : kPendingPages) t.count(p + " (pending) exists", fs::exists(repo.root / p) ? 1 : 0, 1);
     for (const auto& e : fs::directory_iterator(repo.root / "docs" / "generated"))
         t.count("docs/generated/" + e.path().filename().string() + ": shown by a page",
                 std::count(shown.begin(), shown.end(), e.path().filename().string()) > 0 ? 1 : 0, 1);

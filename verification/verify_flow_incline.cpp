@@ -1,6 +1,6 @@
 // Verification (c) of the flow solver (Sect. 2.1): a layer on a rough inclined plane.
 //
-// What the model predicts (docs/flow_solver.md, Sect. 6): eqs. (16)-(20) give eta = eta0 p/sqrt(T),
+// What the model predicts (docs/flow_solver.md, Sect. 1): eqs. (16)-(20) give eta = eta0 p/sqrt(T),
 // eps Phi T = eps0 p sqrt(T), lambda = lambda0 p/sqrt(T) exactly. For steady uniform flow down a
 // plane at angle theta (no-slip, adiabatic bottom, free surface) momentum gives tau = p tan(theta),
 // and eq. (14) becomes, with s = sqrt(T),
@@ -21,7 +21,7 @@
 //   5. oblique to the grid: a bed in a box whose surface slopes at 19 deg (below atan(mu)), cells
 //      cut by the staircase of the slope, holds: its centre of mass moves by less than half a cell
 //      in 1 s. The move of a 26 deg slope is printed beside it (the explicit step's acoustic
-//      dissipation holds it too at this cell size; docs/flow_solver.md Sect. 5).
+//      dissipation holds it too at this cell size; docs/history.md, flow solver).
 // Every check runs in both time-stepping modes (explicit, semi-implicit) with the same tolerance.
 // Writes flow_incline_*.dat (explicit mode; the semi-implicit mode adds _semi_implicit) for
 // figures/fig_flow_incline.gp.

@@ -5,7 +5,7 @@
 //   - rolling regime (Froude number Omega^2 R/g = 2e-3, inside the rolling range 1e-4 .. 1e-2 of
 //     Mellmann 2001): after the first avalanche the surface flows continuously, the kinetic energy
 //     staying within a factor 100 of its largest value (in the slumping regime it falls by orders
-//     of magnitude between avalanches, 1e5 in the stick-slip runs of docs/flow_solver.md Sect. 8),
+//     of magnitude between avalanches, 1e5 in the stick-slip runs of docs/history.md, flow solver),
 //     and the flow is localised at the surface: the material 5 cm
 //     or more below the free surface moves relative to the drum at less than 10 % of the speed
 //     of the top centimetre;

@@ -64,7 +64,7 @@ inline double flowing_layer_thickness(const DrumState& d, double R) {
 }
 
 /// Appends the solver's work to a summary row: steps_X, the steps whose dt the bound X set
-/// (docs/flow_solver.md Sect. 3), the semi-implicit step's pressure_solves, newton and krylov
+/// (docs/flow_solver.md Sect. 2, S1), the semi-implicit step's pressure_solves, newton and krylov
 /// iterations (0 in the explicit step), the temperature solves' conjugate-gradient iterations,
 /// and seconds_S, the wall-clock seconds of each stage S of the step (FlowStage).
 void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values);

@@ -1,5 +1,5 @@
 // Numerical parameters of the flow solver, the optional source terms, and the wall velocities
-// (docs/flow_solver.md Sect. 6; every default is justified in docs/assumptions.md F1-F8).
+// (docs/flow_solver.md Sect. 4; every default is justified in docs/assumptions.md F1-F8).
 //
 //   solves      nothing: the numerical parameters and their defaults
 //   inputs      a scene's [flow] section (src/scenes) or a program
@@ -16,7 +16,7 @@
 
 namespace granseg {
 
-/// How a step treats the acoustic waves (docs/flow_solver.md Sect. 2).
+/// How a step treats the acoustic waves (docs/flow_solver.md Sect. 1).
 enum class TimeStepping { explicit_waves, semi_implicit };
 inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
     {TimeStepping::explicit_waves, "explicit",
@@ -25,7 +25,7 @@ inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
      "pressure implicit (one Newton-Krylov solve per step), dt bounded by the material speed (cfl on |u_n|)"},
 };
 
-/// How the implicit viscosity treats the axes (docs/flow_solver.md Sect. 4).
+/// How the implicit viscosity treats the axes (docs/flow_solver.md, "Why these choices").
 enum class ViscositySolve { split, coupled };
 inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
     {ViscositySolve::coupled, "coupled",
@@ -36,7 +36,7 @@ inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
 
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
-    TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 5)
+    TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 1)
     std::optional<ViscositySolve> viscosity;  // unset: coupled with semi-implicit, split with explicit
     double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))

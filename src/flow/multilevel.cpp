@@ -21,7 +21,7 @@ constexpr long kParallelRows = 1024;
 /// dust rows, which matter, have no coupling at all).
 constexpr double kDominance = 5.0;
 /// Scale of the coarse correction, below sqrt(2) (header comment). CG iterations to 1e-7 on the
-/// drum's Jacobians at 50 / 100 / 200 cells (docs/flow_solver.md Sect. 5): V-cycle 9 / 12 / 17
+/// drum's Jacobians at 50 / 100 / 200 cells (docs/history.md, flow solver): V-cycle 9 / 12 / 17
 /// with 1.0, 11 / 13 / 14 with 1.4, 14 / 17 / 19 with 1.8; W-cycle 8 / 9 / 11 with 1.0, 8 / 9 / 10
 /// with 1.4.
 constexpr double kOverCorrection = 1.4;

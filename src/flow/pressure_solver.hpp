@@ -1,4 +1,4 @@
-// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 5).
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 2, S4).
 //
 //   solves      F(dp) = 0 (below) for the pressure increments dp, by Newton's method with
 //               multilevel-preconditioned conjugate gradients for each Newton step
@@ -20,7 +20,7 @@
 // positive definite, by conjugate gradients (Eigen) only as far as the Newton tolerance needs,
 // preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
 // cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
-// grew like 1/h (docs/flow_solver.md Sect. 5); the sparsity pattern (inside cells, interior
+// grew like 1/h (docs/flow_solver.md, "Why these choices"); the sparsity pattern (inside cells, interior
 // faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start)
 // unless dp = 0 is closer to the solution.
 // The Newton update, per cell: p + s, except where s would take a cell from above Phi_co (the

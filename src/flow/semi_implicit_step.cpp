@@ -1,4 +1,4 @@
-// FlowSolver's semi-implicit step (docs/flow_solver.md Sect. 5): the driver and its stages. The
+// FlowSolver's semi-implicit step (docs/flow_solver.md Sect. 2): the driver and its stages. The
 // kernels are in flow/semi_implicit.hpp; the stage list and what each stage reads and writes are
 // in the header comment of flow/flow_solver.hpp.
 #include "flow/flow_solver.hpp"

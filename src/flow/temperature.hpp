@@ -1,4 +1,4 @@
-// The temperature equation (14) without convection (docs/flow_solver.md Sect. 4).
+// The temperature equation (14) without convection (docs/flow_solver.md Sect. 2, T).
 //
 //   solves      heating, dissipation and conduction of T in one implicit system per step
 //               (below), by Jacobi-preconditioned conjugate gradients for the change of T

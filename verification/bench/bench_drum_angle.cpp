@@ -12,8 +12,8 @@
 // mode's angle as a + b h^p with that p (a: a reading of the h -> 0 limit, for both modes the same
 // if the gap's power law holds). Writes the gaps to bench_drum_angle_gap.dat.
 // The one check: mass to round-off in every run. The angles are reported, never asserted: this
-// study measures what the drum's angle is at the resolutions we can afford (docs/flow_solver.md
-// Sect. 11, "The angle against the cell size").
+// study measures what the drum's angle is at the resolutions we can afford (docs/sect4.2_tumbler.md
+// and docs/history.md, flow solver).
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //

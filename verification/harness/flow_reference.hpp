@@ -40,7 +40,7 @@ struct FlowProgram {
 FlowProgram flow_program(int argc, char** argv);
 
 /// The flow solver's time-stepping modes, in the order every flow verification program runs them
-/// with the same checks and tolerances (docs/flow_solver.md Sect. 8).
+/// with the same checks and tolerances (docs/flow_solver.md Sect. 3).
 inline constexpr TimeStepping kFlowModes[] = {TimeStepping::explicit_waves, TimeStepping::semi_implicit};
 
 /// The checks of one mode: what a flow verification program runs once per mode of kFlowModes.

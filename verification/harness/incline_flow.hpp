@@ -1,4 +1,4 @@
-// A layer on a rough inclined plane (verify_flow_incline; docs/flow_solver.md Sect. 9): a column
+// A layer on a rough inclined plane (verify_flow_incline; docs/flow_solver.md Sect. 3): a column
 // of the substitute material 1 cm deep in a 2 cm domain, periodic along the slope, started in
 // linear shear at 20 1/s with T from eq. (45); its run, the solver's critical angle by bisection,
 // and the comparison of the profiles at that angle with the boundary-value solution (T uniform,
