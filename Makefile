@@ -178,18 +178,19 @@ $(BUILD)/results/verify_docs.rc: $(filter-out $(BUILD)/results/verify_docs.rc,$(
 # Every figures/*.gp names the programs whose data it plots in a line '# needs: NAME ...': a
 # verification program, a benchmark (bench_*), or a scene run by make (run_SCENE: one run of
 # verification/scenes/SCENE.toml into $(RUNS)/SCENE, its wall time in $(RUNS)/SCENE.seconds).
-# A PNG is re-rendered only when its script or one of those programs' results is newer.
+# A PNG is re-rendered only when its script or one of those programs' results is newer. A
+# benchmark is no prerequisite: a changed program must never rerun an hour of benchmark to draw a
+# figure; `make bench` draws the figures of what it ran, afresh.
 $(BUILD)/figures.mk: $(FIG_GP) $(BENCH_GP) $(FULL_GP) Makefile
 	@mkdir -p $(@D)
 	@for gp in $(FIG_GP) $(BENCH_GP) $(FULL_GP); do \
 	  png=$(BUILD)/figures/$$(basename $$gp .gp).png; \
-	  needs=$$(sed -n 's/^# needs://p' $$gp); \
-	  printf '%s:' "$$png"; \
+	  needs=$$(sed -n 's/^# needs://p' $$gp); deps=""; \
 	  for n in $$needs; do \
-	    case $$n in bench_*) printf ' $(BUILD)/bench-results/%s.rc' $$n;; \
-	                run_*) printf ' $(RUNS)/%s.seconds' $${n#run_};; \
-	                *) printf ' $(BUILD)/results/%s.rc' $$n;; esac; \
-	  done; echo; \
+	    case $$n in bench_*) ;; \
+	                run_*) deps="$$deps $(RUNS)/$${n#run_}.seconds";; \
+	                *) deps="$$deps $(BUILD)/results/$$n.rc";; esac; \
+	  done; echo "$$png:$$deps"; \
 	done > $@
 
 -include $(BUILD)/figures.mk
@@ -217,15 +218,24 @@ DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig
                fig5_region_c_example fig6a_profiles fig6b_closeup fig7b_kinematic \
                fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic
 
+# The Fig. 7 study's figures come from a benchmark: drawn when its data is there (make bench
+# BENCH=bench_fig7_convergence), else left as they are.
+DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work
+
 docs-figures: deps
 	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)
 	@$(MAKE) --no-print-directory $(PAR) -O $(DOC_FIGURES:%=$(BUILD)/figures/%.png)
-	@for f in $(DOC_FIGURES); do \
-	  gnuplot -e "datadir='$(BUILD)/data'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
+	@drawn="$(DOC_FIGURES)"; \
+	for f in $(DOC_BENCH_FIGURES); do \
+	  if [ -f $(BUILD)/bench-data/$$(sed -n 's/^# reads: *\([^ ]*\).*/\1/p' figures/$$f.gp) ]; then drawn="$$drawn $$f"; \
+	  else echo "docs-figures: $$f kept (its benchmark has not run)"; fi; \
+	done; \
+	for f in $$drawn; do \
+	  gnuplot -e "datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
 	    && mv docs/figures/$$f.png.tmp docs/figures/$$f.png && echo "docs-figures: docs/figures/$$f.png" \
 	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
-	done
-	@$(BUILD)/verification/verify_docs --fingerprint $(DOC_FIGURES)
+	done; \
+	$(BUILD)/verification/verify_docs --fingerprint $$drawn
 
 # Generated tables: a program writes NAME.md into $(BUILD)/data or $(BUILD)/bench-data; this
 # copies every fresh one into docs/generated/NAME.md and into the pages' blocks that show it.
@@ -316,11 +326,15 @@ bench: deps
 	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(BENCH:%=$(BUILD)/bench/%)
 	@rm -f $(BENCH_RC)
 	@$(MAKE) --no-print-directory -j1 run-bench
+	@rm -f $(BENCH_RUN_PNG)
 	@$(MAKE) --no-print-directory $(PAR) $(BENCH_RUN_PNG)
 
-# One job at a time: the full figures may first run the Fig. 7 drum (make fig7) and bench_drum_angle,
-# whose timings are worthless if they run side by side; rendering the PNGs takes seconds.
+# One job at a time: the full figures may first run the Fig. 7 drum (make fig7) and a benchmark
+# that has not run yet (bench_drum_angle), whose timings are worthless if they run side by side;
+# rendering the PNGs takes seconds.
+FULL_BENCHES = $(sort $(filter bench_%,$(foreach gp,$(FULL_GP),$(shell sed -n 's/^# needs://p' $(gp)))))
 figures-full: deps
+	@for b in $(FULL_BENCHES); do [ -f $(BUILD)/bench-results/$$b.rc ] || $(MAKE) --no-print-directory bench BENCH=$$b || exit 1; done
 	@$(if $(FULL_PNG),$(MAKE) --no-print-directory -j1 $(FULL_PNG),echo "figures-full: no long studies yet (figures/full*.gp)")
 
 # ---- sanitizers --------------------------------------------------------------------------------

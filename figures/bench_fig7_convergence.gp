@@ -3,6 +3,7 @@
 # lies) from the finest run to h = 0 and the Richardson-extrapolated value at h = 0; the dt_max
 # study's runs (halved, doubled) beside the finest grid.
 # needs: bench_fig7_convergence
+# reads: fig7_runs.dat fig7_convergence.dat
 # Data: fig7_runs.dat (kind explicit cells h_mm dt_factor dt_mean_ms steps wall_s cpu_s, then per
 #       quantity value and _se: angle layer index ring periphery core contrast axis from column 10);
 #       fig7_convergence.dat (quantity series runs x1 f1 f_ext gci lo hi condition R p asymptotic se

@@ -3,6 +3,7 @@
 # series does not converge monotonically), per time stepping, grid and dt_max; the cells per
 # diameter at each point; the tolerances of a quick look, a figure and a paper (fig7_work.cpp).
 # needs: bench_fig7_convergence
+# reads: fig7_work.dat
 # Data: fig7_work.dat (explicit cells dt_factor wall_s err_angle err_layer err_index err_ring
 #       err_periphery err_core err_contrast err_axis, then u_angle ... u_axis: the reference's
 #       uncertainty, drawn as a grey band: an error below it is not resolved).

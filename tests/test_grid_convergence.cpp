@@ -34,6 +34,29 @@ BOOST_AUTO_TEST_CASE(exact_power_law_with_constant_ratio) {
     BOOST_TEST(g.hi == f[2]);
 }
 
+// An observed order far above the formal one (p = 6 against 1): f_ext keeps the observed order,
+// the GCI takes the formal order and Fs = 3 (|e21|/(2 - 1) = e21); within [pf/2, 2 pf] (p = 1.5
+// against 1) the rule changes nothing; far below (p = 0.3 against 1) the GCI takes p = 1/2.
+BOOST_AUTO_TEST_CASE(observed_order_far_from_the_formal_one) {
+    const std::array<double, 3> h{0.1, 0.2, 0.4};
+    std::array<double, 3> f{};
+    for (int i = 0; i < 3; ++i) f[i] = power_law(3, 0.5, 6.0, h[i]);
+    const GridConvergence g = three_grid_convergence(h, f, 1.25, 1.0);
+    BOOST_TEST(g.p == 6.0, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(g.p_gci == 1.0);
+    BOOST_TEST(g.fs == 3.0);
+    BOOST_TEST(g.f_ext == 3.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(g.uncertainty == 3.0 * (f[1] - f[0]), boost::test_tools::tolerance(1e-10));
+    for (int i = 0; i < 3; ++i) f[i] = power_law(3, 0.5, 1.5, h[i]);
+    const GridConvergence near = three_grid_convergence(h, f, 1.25, 1.0);
+    BOOST_TEST(near.p_gci == near.p);
+    BOOST_TEST(near.fs == 1.25);
+    for (int i = 0; i < 3; ++i) f[i] = power_law(3, 0.5, 0.3, h[i]);
+    const GridConvergence low = three_grid_convergence(h, f, 1.25, 1.0);
+    BOOST_TEST(low.p_gci == 0.5);
+    BOOST_TEST(low.uncertainty == 3.0 * (f[1] - f[0]) / (std::sqrt(2.0) - 1.0), boost::test_tools::tolerance(1e-10));
+}
+
 // The study's grids, 100, 71 and 50 cells per diameter: the ratios differ (1.408, 1.420), so the
 // order comes from the fixed-point iteration; a value that rises under refinement (C < 0).
 BOOST_AUTO_TEST_CASE(exact_power_law_with_the_study_grids) {

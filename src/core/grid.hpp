@@ -43,6 +43,12 @@ struct Grid {
         return axis == 0 ? 1 : axis == 1 ? static_cast<std::size_t>(n[0]) : static_cast<std::size_t>(n[0]) * n[1];
     }
     bool is_inside(std::size_t cell) const { return inside.empty() || inside[cell] != 0; }
+    /// Number of inside cells.
+    std::size_t inside_cells() const {
+        std::size_t count = 0;
+        for (std::size_t c = 0; c < cells(); ++c) count += is_inside(c);
+        return count;
+    }
     /// Number of faces normal to `axis`.
     std::size_t faces(int axis) const { return cells() / n[axis] * (n[axis] + 1); }
     /// Index of the lower face along `axis` of cell (i, j, k) in a face field of that axis.

@@ -66,10 +66,10 @@ struct TumblerFlow : SceneJob {
         advance_flow(solver, t_end, "tumbler-flow", sample);
 
         std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change",
-                                         "layer_mean", "layer_std"};
+                                         "layer_mean", "layer_std", "inside_cells"};
         std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
                                    static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
-                                   layer.std_dev()};
+                                   layer.std_dev(), static_cast<double>(grid.inside_cells())};
         append_flow_work(solver, columns, values);
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +

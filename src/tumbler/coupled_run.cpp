@@ -24,12 +24,6 @@ std::array<double, 2> phase_amounts(const CoupledTumbler& t) {
     return {total_amount(t.grid(), t.phi()), total_amount(t.grid(), large)};
 }
 
-long inside_cells(const Grid& g) {
-    long n = 0;
-    for (std::size_t c = 0; c < g.cells(); ++c) n += g.is_inside(c);
-    return n;
-}
-
 std::string numbered(const char* pattern, int n) {
     char name[64];
     std::snprintf(name, sizeof name, pattern, n);
@@ -137,7 +131,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                tumbler.setup().packing_feedback ? 1.0 : 0.0, contrast.contrast, contrast.spread,
                                static_cast<double>(contrast.bins), tumbler.largest_bulk_clip(), tumbler.largest_correction(),
                                tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
-                               static_cast<double>(inside_cells(grid))};
+                               static_cast<double>(grid.inside_cells())};
     append_flow_work(flow, columns, values);
     for (const char* c : {"layer_mean", "layer_std", "axis"}) columns.push_back(c);
     for (double v : {layer.mean(), layer.std_dev(), axis}) values.push_back(v);

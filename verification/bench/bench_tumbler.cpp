@@ -18,6 +18,7 @@
 //
 // Run: build/bench/bench_tumbler [--data DIR]
 #include "core/output.hpp"
+#include "flow/flow_solver.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "scenes/scene_kind.hpp"
@@ -98,22 +99,43 @@ std::string explicit_scene(const std::string& path, const std::string& dir) {
 }
 
 /// The flow alone in both modes (0 explicit, 1 semi-implicit): wall times over the runs, and from
-/// the last run's summary (the runs are deterministic) steps, angle and layer thickness; printed
-/// and written to bench_tumbler_modes.dat.
+/// the last run's summary (the runs are deterministic) steps, angle and layer thickness, the cost
+/// per cell and step, the solver's work per step and the shares of the step's stages (FlowStage);
+/// printed and written to bench_tumbler_modes.dat.
 void write_modes(const verify::ProgramOptions& options, const std::vector<std::pair<std::vector<double>, std::string>>& modes) {
-    DataTable table({"semi_implicit", "wall_median_s", "wall_min_s", "wall_max_s", "steps", "angle_mean_deg",
-                     "angle_std_deg", "layer_mean_mm", "layer_std_mm"});
+    std::vector<std::string> columns{"semi_implicit", "wall_median_s", "wall_min_s", "wall_max_s", "steps", "angle_mean_deg",
+                                     "angle_std_deg", "layer_mean_mm", "layer_std_mm", "ns_per_cell_step",
+                                     "solves_per_step", "newton_per_solve", "krylov_per_newton", "temperature_cg_per_step"};
+    for (int k = 0; k < kFlowStages; ++k) columns.push_back(std::string("share_") + flow_stage_name(static_cast<FlowStage>(k)));
+    DataTable table(columns);
     table.comment("tumbler-flow, 100 cells per diameter, 25 s: 0 explicit, 1 semi-implicit; angle and flowing-layer "
-                  "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from");
+                  "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from; ns per "
+                  "cell and step from the median wall time; shares of the timed stages");
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const auto& [walls, dir] = modes[m];
         const auto s = last_row(dir + "/summary.dat");
-        table.row({static_cast<double>(m), verify::median(walls), *std::min_element(walls.begin(), walls.end()),
-                   *std::max_element(walls.begin(), walls.end()), s.at("steps"), s.at("angle_mean_deg"),
-                   s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std")});
-        std::printf("%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm\n",
-                    m == 0 ? "explicit" : "semi-implicit", verify::median(walls), s.at("steps"), s.at("angle_mean_deg"),
-                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"));
+        const double steps = s.at("steps"), solves = std::max(1.0, s.at("pressure_solves"));
+        double staged = 0.0;
+        for (int k = 0; k < kFlowStages; ++k) staged += s.at(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
+        std::vector<double> row{static_cast<double>(m), verify::median(walls), *std::min_element(walls.begin(), walls.end()),
+                                *std::max_element(walls.begin(), walls.end()), steps, s.at("angle_mean_deg"),
+                                s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"),
+                                1e9 * verify::median(walls) / (steps * s.at("inside_cells")), s.at("pressure_solves") / steps,
+                                s.at("newton") / solves, s.at("krylov") / std::max(1.0, s.at("newton")),
+                                s.at("temperature_iterations") / steps};
+        std::string shares;
+        for (int k = 0; k < kFlowStages; ++k) {
+            const std::string name = flow_stage_name(static_cast<FlowStage>(k));
+            row.push_back(s.at("seconds_" + name) / staged);
+            shares += " " + name + " " + verify::format(100.0 * row.back()) + "%";
+        }
+        table.row(row);
+        std::printf("%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm, %.0f ns per cell "
+                    "and step; per step %.2f solves, %.2f Newton per solve, %.2f CG per Newton, %.1f temperature CG; "
+                    "shares:%s\n",
+                    m == 0 ? "explicit" : "semi-implicit", verify::median(walls), steps, s.at("angle_mean_deg"),
+                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"), row[9], row[10], row[11],
+                    row[12], row[13], shares.c_str());
     }
     std::printf("wall ratio explicit / semi-implicit (medians): %.2f\n",
                 verify::median(modes[0].first) / verify::median(modes[1].first));

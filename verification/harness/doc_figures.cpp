@@ -93,6 +93,14 @@ std::vector<std::string> figure_reads(const fs::path& root, const std::string& n
     return read_files(read_text(root / "figures" / (name + ".gp")), has_reads);
 }
 
+bool plots_benchmark(const fs::path& root, const std::string& name) {
+    static const std::regex needs(R"(^# needs:.*\bbench_)");
+    std::istringstream in(read_text(root / "figures" / (name + ".gp")));
+    for (std::string line; std::getline(in, line);)
+        if (std::regex_search(line, needs)) return true;
+    return false;
+}
+
 std::string data_fingerprint(const std::string& text) {
     const auto rows = data_rows(text);
     std::vector<double> largest;

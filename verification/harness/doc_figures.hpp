@@ -26,6 +26,10 @@ std::string figure_fingerprint(const std::filesystem::path& root, const std::str
 /// The data files figure `name` reads (its `# reads:` line; empty if none).
 std::vector<std::string> figure_reads(const std::filesystem::path& root, const std::string& name);
 
+/// Whether figure `name` plots a benchmark's data (its `# needs:` line names a bench_*): its
+/// files are then in the build's bench-data directory, and exist only once the benchmark ran.
+bool plots_benchmark(const std::filesystem::path& root, const std::string& name);
+
 /// The fingerprint of a data file's text alone (the data part of figure_fingerprint).
 std::string data_fingerprint(const std::string& text);
 

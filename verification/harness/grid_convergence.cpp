@@ -36,7 +36,7 @@ double observed_order(double e21, double e32, double r21, double r32) {
 /// The result for values that allow no extrapolation: their range, and the uncertainty `share` of it.
 GridConvergence range_only(Convergence condition, double R, double lo, double hi, double share) {
     GridConvergence g;
-    g.condition = condition, g.R = R, g.p = kNaN, g.f_ext = kNaN, g.asymptotic = kNaN, g.fs = kNaN;
+    g.condition = condition, g.R = R, g.p = kNaN, g.p_gci = kNaN, g.f_ext = kNaN, g.asymptotic = kNaN, g.fs = kNaN;
     g.lo = lo, g.hi = hi, g.uncertainty = share * (hi - lo);
     return g;
 }
@@ -62,7 +62,13 @@ std::string convergence_name(Convergence c) {
     return "?";
 }
 
-GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f, double Fs) {
+std::pair<double, double> gci_order(double p, double Fs, double formal_order) {
+    if (!(formal_order > 0.0) || (p >= 0.5 * formal_order && p <= 2.0 * formal_order)) return {p, Fs};
+    return {std::min(std::max(0.5, p), formal_order), 3.0};
+}
+
+GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f, double Fs,
+                                       double formal_order) {
     require_grids(h.data(), f.data(), 3);
     const double e21 = f[1] - f[0], e32 = f[2] - f[1];
     const double lo = *std::min_element(f.begin(), f.end()), hi = *std::max_element(f.begin(), f.end());
@@ -74,11 +80,12 @@ GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std
     const double p = observed_order(e21, e32, r21, r32);
     if (!std::isfinite(p)) return range_only(Convergence::undetermined, R, lo, hi, 1.0);
     GridConvergence g;
-    g.condition = Convergence::monotone, g.R = R, g.p = p, g.lo = lo, g.hi = hi, g.fs = Fs;
+    const auto [q, fs] = gci_order(p, Fs, formal_order);
+    g.condition = Convergence::monotone, g.R = R, g.p = p, g.p_gci = q, g.lo = lo, g.hi = hi, g.fs = fs;
     g.f_ext = f[0] - e21 / (std::pow(r21, p) - 1.0);
-    g.uncertainty = Fs * std::fabs(e21) / (std::pow(r21, p) - 1.0);
-    const double gci32 = Fs * std::fabs(e32) / (std::pow(r32, p) - 1.0);
-    g.asymptotic = gci32 / (std::pow(r21, p) * g.uncertainty);
+    g.uncertainty = fs * std::fabs(e21) / (std::pow(r21, q) - 1.0);
+    const double gci32 = fs * std::fabs(e32) / (std::pow(r32, q) - 1.0);
+    g.asymptotic = gci32 / (std::pow(r21, q) * g.uncertainty);
     return g;
 }
 
@@ -88,7 +95,7 @@ GridConvergence two_grid_convergence(const std::array<double, 2>& h, const std::
     if (!(p > 0.0)) throw InputError("grid convergence: the assumed order must be positive");
     const double r = h[1] / h[0], e21 = f[1] - f[0];
     GridConvergence g;
-    g.condition = Convergence::two_grids, g.R = kNaN, g.p = p, g.asymptotic = kNaN, g.fs = Fs;
+    g.condition = Convergence::two_grids, g.R = kNaN, g.p = p, g.p_gci = p, g.asymptotic = kNaN, g.fs = Fs;
     g.lo = std::min(f[0], f[1]), g.hi = std::max(f[0], f[1]);
     g.f_ext = f[0] - e21 / (std::pow(r, p) - 1.0);
     g.uncertainty = Fs * std::fabs(e21) / (std::pow(r, p) - 1.0);

@@ -16,11 +16,16 @@
 // Not monotone: no extrapolation; the uncertainty is half the range of the three values when
 // oscillatory (Celik et al.) and the whole range when divergent or undetermined (our choice: a bound
 // that does not pretend to know the direction of the error).
+// Observed order far from the scheme's formal order pf (outside [pf/2, 2 pf]; given pf > 0): the
+// grids are not in the asymptotic range, and a GCI formed with that p would mean nothing (p = 9
+// makes it vanish). The GCI then takes p = min(max(1/2, p), pf) and Fs = 3 (Oberkampf & Roy,
+// Verification and Validation in Scientific Computing, Sect. 8.7); f_ext keeps the observed p.
 // Two grids: the order is assumed (the scheme's formal order) and Fs = 3.
 #pragma once
 
 #include <array>
 #include <string>
+#include <utility>
 
 namespace granseg::verify {
 
@@ -33,6 +38,7 @@ struct GridConvergence {
     Convergence condition = Convergence::undetermined;
     double R = 0;           // e21/e32 (NaN with two grids or a zero e32)
     double p = 0;           // observed order (monotone), the assumed one (two grids), else NaN
+    double p_gci = 0;       // order the GCI is formed with (p, or the limited one above), else NaN
     double f_ext = 0;       // Richardson-extrapolated value (monotone or two grids), else NaN
     double uncertainty = 0; // absolute: the GCI (monotone, two grids) or the range rule above
     double asymptotic = 0;  // GCI_32 / (r21^p GCI_21): 1 in the asymptotic range (monotone), else NaN
@@ -41,9 +47,14 @@ struct GridConvergence {
 };
 
 /// Three grids: h fine to coarse (h[0] < h[1] < h[2], all > 0), f the values on them; Fs the factor
-/// of safety. InputError for cell sizes not strictly increasing and positive or a non-finite value.
+/// of safety; formal_order > 0 applies the rule for an observed order far from it (above), 0 does
+/// not. InputError for cell sizes not strictly increasing and positive or a non-finite value.
 GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f,
-                                       double Fs = 1.25);
+                                       double Fs = 1.25, double formal_order = 0.0);
+
+/// The GCI's order and factor of safety for an observed order p (first) and factor Fs (second)
+/// under the rule above; formal_order <= 0: (p, Fs) unchanged.
+std::pair<double, double> gci_order(double p, double Fs, double formal_order);
 
 /// Two grids (h[0] < h[1]) with the assumed order p: f_ext = f1 - e21/(r^p - 1), GCI = Fs |e21|/(r^p - 1).
 GridConvergence two_grid_convergence(const std::array<double, 2>& h, const std::array<double, 2>& f, double p,
