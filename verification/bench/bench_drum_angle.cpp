@@ -17,9 +17,8 @@
 // Writes DIR/drum_angle/<run>/ (each run's scene and files) and bench_drum_angle.dat for
 // figures/full_drum_angle.gp.
 //
-// Run: build/bench/bench_drum_angle [--data DIR]   (long: about 70 minutes on one thread. The runs
-// at dt_max 1 and 0.1 ms took 41 minutes on 2 December 2026, 18 of them the 100-cell explicit run;
-// the dt_max study about 12 more at 50 cells and 18 at 100 cells, two runs at a time, 3 December)
+// Run: build/bench/bench_drum_angle [--data DIR]   (long: over an hour on one thread, most of it
+// the 100-cell explicit run, whose steps follow the sound speed)
 #include "closures/packing.hpp"
 #include "flow/time_step.hpp"
 #include "harness/check_table.hpp"

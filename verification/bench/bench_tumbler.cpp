@@ -13,8 +13,8 @@
 //   e. the Fig. 7d contrast with packing feedback on and off (as verify_tumbler, on the real pattern).
 // Writes DIR/tumbler_flow, DIR/tumbler_flow_explicit, DIR/tumbler (Fig. 7 at full resolution is
 // drawn from a run of its own: make fig7), DIR/tumbler_no_feedback, DIR/tumbler_kinematic,
-// bench_tumbler_times.dat, bench_tumbler_modes.dat and bench_tumbler_pattern.dat. Long (an hour
-// and a half on an idle machine): `make bench`.
+// bench_tumbler_times.dat, bench_tumbler_modes.dat and bench_tumbler_pattern.dat. Long (over an
+// hour, most of it the three explicit runs): `make bench`.
 //
 // Run: build/bench/bench_tumbler [--data DIR]
 #include "core/output.hpp"
