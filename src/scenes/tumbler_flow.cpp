@@ -74,8 +74,8 @@ struct TumblerFlow : SceneJob {
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
                         format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
-                        "samples; mass_change relative; steps_X: steps whose dt the bound X set (docs/flow_solver.md "
-                        "Sect. 3); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step");
+                        "samples; mass_change relative; inside_cells: cells of the drum; steps_X: steps whose dt the bound X "
+                        "set (docs/flow_solver.md, stage S1); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step");
         summary.row(values);
         out.add("history.dat", history);
         out.add("summary.dat", summary);
