@@ -2,7 +2,7 @@
 // the face fluxes of one axis by the HLLC flux with hydrostatic reconstruction (flow/hllc.hpp;
 // walls are mirror states), and the conservative update of (Phi, Phi u, Phi T) from the fluxes
 // with the body forces the potential does not carry (Coriolis, gravity along inactive or
-// periodic axes) and optional source terms. docs/flow_solver.md, "The explicit step".
+// periodic axes) and optional source terms. docs/flow_solver_choices.md, "The explicit step".
 //
 //   solves      the convective part of eqs. (8), (9), (14) over one step (forward Euler, unsplit)
 //   inputs      FlowMesh; the state and closures at t^n, psi and the loads of an axis (fluxes);

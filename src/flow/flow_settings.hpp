@@ -25,7 +25,7 @@ inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
      "pressure implicit (one Newton-Krylov solve per step), dt bounded by the material speed (cfl on |u_n|)"},
 };
 
-/// How the implicit viscosity treats the axes (docs/flow_solver.md, "Why these choices").
+/// How the implicit viscosity treats the axes (docs/flow_solver_choices.md, "Why these choices").
 enum class ViscositySolve { split, coupled };
 inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
     {ViscositySolve::coupled, "coupled",

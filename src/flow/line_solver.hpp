@@ -6,7 +6,7 @@
 //   outputs     the solutions, overwriting the right-hand sides
 //   invariants  no pivoting: diag >= lower + upper (an M-matrix)
 //
-// Used by the implicit, dimension-split (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver.md, "The explicit step").
+// Used by the implicit, dimension-split (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver_choices.md, "The explicit step").
 //
 // Along a line with cells 0..n-1 the system is
 //     diag[c] x[c] - lower[c] x[c - s] - upper[c] x[c + s] = rhs[c]      (s: stride of the axis)

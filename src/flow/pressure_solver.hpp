@@ -20,7 +20,7 @@
 // positive definite, by conjugate gradients (Eigen) only as far as the Newton tolerance needs,
 // preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
 // cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
-// grew like 1/h (docs/flow_solver.md, "Why these choices"); the sparsity pattern (inside cells, interior
+// grew like 1/h (docs/flow_solver_choices.md, "Why these choices"); the sparsity pattern (inside cells, interior
 // faces) and the hierarchy are built once; the first guess is the previous step's dp (warm start)
 // unless dp = 0 is closer to the solution.
 // The Newton update, per cell: p + s, except where s would take a cell from above Phi_co (the

@@ -1,4 +1,4 @@
-// Implicit viscosity split by axes (eqs. 9-11; docs/flow_solver.md, "The explicit step"), the explicit
+// Implicit viscosity split by axes (eqs. 9-11; docs/flow_solver_choices.md, "The explicit step"), the explicit
 // step's default.
 //
 //   solves      Phi (u_new - u)/dt = div(eta grad u_new), one axis after the other, by

@@ -6,7 +6,7 @@
 // conjugate-gradient iterations per Newton step; and the ratio of the modes' wall time per drum
 // second. Medians of kRuns runs; reports, never asserts. The explicit step is set by the sound
 // speed of the resting bed, which the window already has; the semi-implicit step reaches dt_max
-// after its start-up (docs/flow_solver.md, "Cost of a step").
+// after its start-up (docs/flow_solver_choices.md, "Cost of a step").
 // Writes bench_flow.dat for figures/bench_flow.gp.
 //
 // Run: build/bench/bench_flow [--data DIR]   (a few minutes; timings are noisy on a shared machine)
