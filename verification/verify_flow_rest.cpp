@@ -44,7 +44,13 @@ constexpr double kTFloor = 1e-8, kSettle = 12.0;
 // gravity and the pressure gradient cancel (it grows as dt^2), and the Newton steps taken on it
 // each cost tens of ulps of p in their round trip through the equation of state. At the defaults
 // (2 ms, 1e-2) Phi moved by 0.8-1.1e-13 in 2 s, a few hundred ulps more than the bound.
-constexpr double kBalanced = 2.0, kBalancedDt = 1e-3, kBalancedPressure = 1e-6;
+constexpr double kBalanced = 2.0;
+/// The largest step and the pressure tolerance of a settling run.
+struct Stepping {
+    double dt_max, pressure_tolerance;
+};
+const Stepping kBalancedStepping{1e-3, 1e-6};
+const Stepping kDefaultStepping{FlowSettings{}.dt_max, FlowSettings{}.pressure_tolerance};
 // Round-off level of the momentum: 1e-13 of the settling scale Phi sqrt(|g| H) (0.37 m/s), i.e.
 // a few hundred units of double-precision resolution, room for the rounding every face adds to
 // the discrete balance each step.
@@ -83,15 +89,15 @@ std::vector<double> bed(int nz, double Phi_co, const Profile& profile) {
 }
 
 /// Settles the bed Phi (one value per row) in a box of nx columns for t_end seconds, steps of at
-/// most dt_max (below the default: with the pressure solved to kBalancedPressure).
+/// most stepping.dt_max and the pressure solved to stepping.pressure_tolerance.
 Run settle(const Material& m, TimeStepping mode, int nx, const std::vector<double>& initial, double t_end,
-           DataTable* history, double dt_max) {
+           DataTable* history, const Stepping& stepping) {
     const int nz = static_cast<int>(initial.size());
     Grid g = Grid::plane_xz(nx, nz, 0.0, 0.0, kHeight / nz * nx, kHeight);
     FlowSettings s;
     s.time_stepping = mode;
     s.T_floor = kTFloor;
-    if (dt_max < s.dt_max) s.dt_max = dt_max, s.pressure_tolerance = kBalancedPressure;
+    s.dt_max = stepping.dt_max, s.pressure_tolerance = stepping.pressure_tolerance;
     FlowSolver solver(g, m, s, Frame{});
     std::vector<double> Phi(g.cells()), T(g.cells(), kTFloor), zero(g.cells(), 0.0);
     for (int k = 0; k < nz; ++k)
@@ -152,7 +158,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     // A uniform bed above Phi_co: Phi = Phi_co + 0.004 (p ~ 0.05 m^2/s^2).
     const Profile dense = [](double, double co) { return co + 0.004; };
     for (int nz : sizes) {
-        const Run r = settle(m, mode, 1, bed(nz, Phi_co, dense), kSettle, nz == 60 ? &history : nullptr, kBalancedDt);
+        const Run r = settle(m, mode, 1, bed(nz, Phi_co, dense), kSettle, nz == 60 ? &history : nullptr, kBalancedStepping);
         if (nz == 30) column30 = r.Phi;
         errors.push_back(profile_error(m, r, profiles, nz));
         const std::string tag = verify::mode_tag(mode) + "column nz = " + std::to_string(nz) + ": ";
@@ -171,7 +177,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     // from a uniform state, the no-slip walls leave the partly filled surface row slightly uneven,
     // and below the yield stress the model bed is a liquid of viscosity eta0 p/sqrt(T_floor) that
     // levels only over many seconds; the columns above test the approach to balance.)
-    const Run box = settle(m, mode, 6, column30, kBalanced, nullptr, kBalancedDt);
+    const Run box = settle(m, mode, 6, column30, kBalanced, nullptr, kBalancedStepping);
     double change = 0.0;
     for (int k = 0; k < 30; ++k) change = std::max(change, std::fabs(box.Phi[k] - column30[k]));
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
@@ -194,7 +200,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         {"loose box 6 x 30 (walls), Phi = Phi_co - 0.02", 6, [](double, double co) { return co - 0.02; }},
     };
     for (const auto& start : loose) {
-        const Run r = settle(m, mode, start.nx, bed(kLooseCells, Phi_co, start.profile), kSettle, nullptr, FlowSettings{}.dt_max);
+        const Run r = settle(m, mode, start.nx, bed(kLooseCells, Phi_co, start.profile), kSettle, nullptr, kDefaultStepping);
         const std::string tag = verify::mode_tag(mode) + start.name + ": ";
         table.at_most(tag + "max |Phi - Phi_lithostatic(GSL)|" + (start.nx > 1 ? " (row means)" : ""),
                       profile_error(m, r, profiles, kLooseCells), kLooseProfileTol);

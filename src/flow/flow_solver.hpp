@@ -115,7 +115,6 @@ const char* flow_stage_name(FlowStage stage);
 /// Wall-clock seconds spent in each FlowStage (for benchmarks and run summaries).
 struct FlowTimers {
     std::array<double, kFlowStages> seconds{};
-    double operator[](FlowStage stage) const { return seconds[static_cast<int>(stage)]; }
     double total() const;
 };
 

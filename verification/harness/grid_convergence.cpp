@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace granseg::verify {
 
@@ -49,6 +50,13 @@ void require_grids(const double* h, const double* f, int n) {
     }
 }
 
+/// The GCI's order and factor of safety (first, second) for an observed order p and a factor Fs
+/// under the rule for an order far from the formal one (header); formal_order <= 0: (p, Fs).
+std::pair<double, double> gci_order(double p, double Fs, double formal_order) {
+    if (!(formal_order > 0.0) || (p >= 0.5 * formal_order && p <= 2.0 * formal_order)) return {p, Fs};
+    return {std::min(std::max(0.5, p), formal_order), 3.0};
+}
+
 }  // namespace
 
 std::string convergence_name(Convergence c) {
@@ -60,11 +68,6 @@ std::string convergence_name(Convergence c) {
         case Convergence::two_grids: return "two grids";
     }
     return "?";
-}
-
-std::pair<double, double> gci_order(double p, double Fs, double formal_order) {
-    if (!(formal_order > 0.0) || (p >= 0.5 * formal_order && p <= 2.0 * formal_order)) return {p, Fs};
-    return {std::min(std::max(0.5, p), formal_order), 3.0};
 }
 
 GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f, double Fs,

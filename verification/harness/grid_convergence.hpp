@@ -25,7 +25,6 @@
 
 #include <array>
 #include <string>
-#include <utility>
 
 namespace granseg::verify {
 
@@ -51,10 +50,6 @@ struct GridConvergence {
 /// not. InputError for cell sizes not strictly increasing and positive or a non-finite value.
 GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f,
                                        double Fs = 1.25, double formal_order = 0.0);
-
-/// The GCI's order and factor of safety for an observed order p (first) and factor Fs (second)
-/// under the rule above; formal_order <= 0: (p, Fs) unchanged.
-std::pair<double, double> gci_order(double p, double Fs, double formal_order);
 
 /// Two grids (h[0] < h[1]) with the assumed order p: f_ext = f1 - e21/(r^p - 1), GCI = Fs |e21|/(r^p - 1).
 GridConvergence two_grid_convergence(const std::array<double, 2>& h, const std::array<double, 2>& f, double p,
