@@ -26,7 +26,7 @@ CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
 void CoupledViscosity::set_up() {
     rhs_.setZero(pattern_.matrix.rows(), 3);
     mass_.setZero(pattern_.matrix.rows());
-    ldlt_.analyzePattern(pattern_.matrix);  // the fill-reducing ordering, once per pattern
+    ldlt_.analyze(pattern_.matrix);  // the fill-reducing ordering and the supernodes, once per pattern
 }
 
 void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
@@ -69,8 +69,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
                 for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }
-    ldlt_.factorize(pattern_.matrix);
-    if (ldlt_.info() != Eigen::Success)
+    if (!ldlt_.factorize(pattern_.matrix, mesh.parallel))
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
     const Eigen::MatrixXd u = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells)
@@ -88,7 +87,10 @@ Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     // The columns' solves are independent: one per thread.
     const long n = static_cast<long>(columns.size());
 #pragma omp parallel for schedule(static, 1) if (parallel && n > 1)
-    for (long q = 0; q < n; ++q) x.col(columns[q]) = ldlt_.solve(rhs_.col(columns[q]));
+    for (long q = 0; q < n; ++q) {
+        x.col(columns[q]) = rhs_.col(columns[q]);
+        ldlt_.solve(x.col(columns[q]).data());
+    }
     return x;
 }
 

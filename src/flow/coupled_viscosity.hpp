@@ -19,15 +19,16 @@
 // 90 deg before it avalanched; coupled, it avalanches near the friction angle).
 // One sparse symmetric positive definite matrix for the three components: its pattern (inside
 // cells, interior faces) and fill-reducing ordering are set up once, the values and the sparse
-// Cholesky factor (Eigen SimplicialLDLT) each step.
+// LDL^T factor (flow/supernodal_ldlt.hpp) each step.
 #pragma once
 
 #include "flow/cell_pattern.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
 #include "flow/flow_state.hpp"
+#include "flow/supernodal_ldlt.hpp"
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 #include <vector>
@@ -57,7 +58,7 @@ private:
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
     Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)
-    Eigen::SimplicialLDLT<Matrix> ldlt_;
+    SupernodalLDLT ldlt_;
 };
 
 }  // namespace granseg
