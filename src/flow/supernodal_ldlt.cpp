@@ -151,24 +151,55 @@ void SupernodalLDLT::analyze(const Matrix& A) {
     for (long s = 0; s < supers; ++s) value_start_.push_back(value_start_.back() + width(s) * height(s));
     value_.assign(value_start_.back(), 0.0);
 
-    // Where each stored entry of A (lower triangle in the new numbering) goes.
-    place_.assign(A.nonZeros(), -1);
-    for (long c = 0; c < A.outerSize(); ++c)
-        for (long p = A.outerIndexPtr()[c]; p < A.outerIndexPtr()[c + 1]; ++p) {
-            const long i = new_of_old[A.innerIndexPtr()[p]], j = new_of_old[c];
-            if (i < j) continue;
-            const long s = super_of_[j];
-            const auto begin = row_.begin() + row_start_[s], end = row_.begin() + row_start_[s + 1];
-            const long position = std::lower_bound(begin, end, i) - begin;
-            place_[p] = value_start_[s] + (j - first_[s]) * height(s) + position;
-        }
-
-    // The work of each supernode's columns (their outer products, count^2) for the split.
-    std::vector<double> work(supers, 0.0);
-    for (long j = 0; j < n; ++j) work[super_of_[j]] += static_cast<double>(count[j] + 1) * static_cast<double>(count[j] + 1);
-    split(work, super_parent, children);
+    // Where each stored entry of A (lower triangle in the new numbering) goes, by supernode.
+    entry_start_.assign(1, 0);
+    entry_.clear();
+    for (long s = 0; s < supers; ++s) {
+        const auto begin = row_.begin() + row_start_[s], end = row_.begin() + row_start_[s + 1];
+        for (long j = first_[s]; j < first_[s + 1]; ++j)
+            for (long p = A.outerIndexPtr()[order_[j]]; p < A.outerIndexPtr()[order_[j] + 1]; ++p) {
+                const long i = new_of_old[A.innerIndexPtr()[p]];
+                if (i >= j) entry_.push_back({p, (j - first_[s]) * height(s) + (std::lower_bound(begin, end, i) - begin)});
+            }
+        entry_start_.push_back(static_cast<long>(entry_.size()));
+    }
+    split(update_work(), super_parent, children);
     for (Lane& lane : lanes_) lane.relative.assign(n, 0);
     next_.assign(supers, -1), link_.assign(supers, -1), cursor_.assign(supers, 0);
+}
+
+std::vector<double> SupernodalLDLT::update_work() const {
+    // factorize() without the arithmetic: each update's multiply-adds (and its scatter) go to the
+    // supernode that receives it, each panel's to itself.
+    const long supers = supernodes();
+    std::vector<long> link(supers, -1), next(supers, -1), cursor(supers, 0);
+    std::vector<double> work(supers, 0.0);
+    auto wait_for_next_row = [&](long d) {
+        if (cursor[d] == height(d)) return;
+        const long t = super_of_[row_[row_start_[d] + cursor[d]]];
+        next[d] = link[t], link[t] = d;
+    };
+    for (long s = 0; s < supers; ++s) {
+        for (long d = link[s]; d != -1;) {
+            const long after = next[d], q = rows_in(d, cursor[d], s);
+            work[s] += static_cast<double>(width(d) + 1) * static_cast<double>((height(d) - cursor[d]) * q);
+            cursor[d] += q;
+            wait_for_next_row(d);
+            d = after;
+        }
+        work[s] += static_cast<double>((width(s) + 1) * width(s) * height(s));
+        cursor[s] = width(s);
+        wait_for_next_row(s);
+    }
+    return work;
+}
+
+long SupernodalLDLT::rows_in(long d, long begin, long s) const {
+    const long* R = row_.data() + row_start_[d];
+    const long h = height(d), last = first_[s + 1] - 1;
+    long q = 0;
+    while (begin + q < h && R[begin + q] <= last) ++q;
+    return q;
 }
 
 void SupernodalLDLT::split(const std::vector<double>& work, const std::vector<long>& parent,
@@ -214,10 +245,7 @@ void SupernodalLDLT::split(const std::vector<double>& work, const std::vector<lo
 }
 
 bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
-    std::fill(value_.begin(), value_.end(), 0.0);
     const double* a = A.valuePtr();
-    for (std::size_t p = 0; p < place_.size(); ++p)
-        if (place_[p] >= 0) value_[place_[p]] += a[p];
     std::fill(link_.begin(), link_.end(), -1);
     // Left-looking: supernode s takes the updates of every earlier supernode with rows in its
     // columns (the list link_[s]), then factors its panel. The two lanes' subtrees share no
@@ -228,7 +256,7 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
         Lane& lane = lanes_[l];
         lane.pending.clear();
         for (const auto& [begin, end] : lane.subtrees)
-            for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, lane, true);
+            for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
     }
     if (!ok[0] || !ok[1]) return false;
     for (Lane& lane : lanes_)
@@ -237,11 +265,11 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
             next_[d] = link_[s], link_[s] = d;
         }
     for (long s : top_)
-        if (!factor_supernode(s, lanes_[0], false)) return false;
+        if (!factor_supernode(s, a, lanes_[0], false)) return false;
     return true;
 }
 
-bool SupernodalLDLT::factor_supernode(long s, Lane& lane, bool defer) {
+bool SupernodalLDLT::factor_supernode(long s, const double* a, Lane& lane, bool defer) {
     // After an update or its own factorisation, a supernode waits for its next row's supernode.
     auto wait_for_next_row = [&](long d) {
         if (cursor_[d] == height(d)) return;
@@ -251,6 +279,10 @@ bool SupernodalLDLT::factor_supernode(long s, Lane& lane, bool defer) {
         else
             next_[d] = link_[t], link_[t] = d;
     };
+    // The panel starts as s's entries of A (assembled here, on the lane's thread).
+    double* P = value_.data() + value_start_[s];
+    std::fill(P, P + width(s) * height(s), 0.0);
+    for (long e = entry_start_[s]; e < entry_start_[s + 1]; ++e) P[entry_[e].second] += a[entry_[e].first];
     for (long q = 0; q < height(s); ++q) lane.relative[row_[row_start_[s] + q]] = q;
     for (long d = link_[s]; d != -1;) {
         const long after = next_[d];
@@ -266,9 +298,7 @@ bool SupernodalLDLT::factor_supernode(long s, Lane& lane, bool defer) {
 
 void SupernodalLDLT::update(long d, long s, Lane& lane) {
     const long* R = row_.data() + row_start_[d];
-    const long begin = cursor_[d], h = height(d), w = width(d), m = h - begin, last = first_[s + 1] - 1;
-    long q = 0;  // d's rows in s's columns
-    while (begin + q < h && R[begin + q] <= last) ++q;
+    const long begin = cursor_[d], h = height(d), w = width(d), m = h - begin, q = rows_in(d, begin, s);
     cursor_[d] = begin + q;
     const double* L = value_.data() + value_start_[d];
     double* P = value_.data() + value_start_[s];

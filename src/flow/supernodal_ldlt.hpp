@@ -67,9 +67,14 @@ private:
     /// (the rest, factored after both).
     void split(const std::vector<double>& work, const std::vector<long>& parent,
                const std::vector<std::vector<long>>& children);
-    /// Factors supernode s with the updates waiting for it; supernodes then waiting for a top
-    /// supernode go to lane.pending if `defer`. False if a pivot fails.
-    bool factor_supernode(long s, Lane& lane, bool defer);
+    /// Factors supernode s (A's values a) with the updates waiting for it; supernodes then
+    /// waiting for a top supernode go to lane.pending if `defer`. False if a pivot fails.
+    bool factor_supernode(long s, const double* a, Lane& lane, bool defer);
+    /// The multiply-adds of each supernode's updates and panel (factorize()'s schedule without
+    /// the arithmetic), for split().
+    std::vector<double> update_work() const;
+    /// How many of supernode d's rows, from its position begin on, lie in supernode s's columns.
+    long rows_in(long d, long begin, long s) const;
     /// Subtracts supernode d's update of supernode s (from d's row cursor_[d] on) from s's panel.
     void update(long d, long s, Lane& lane);
     /// The dense LDL^T of supernode s's panel (its diagonal block and the rows below); false if a
@@ -82,7 +87,8 @@ private:
     std::vector<long> row_start_;    // per supernode, into row_
     std::vector<long> row_;          // each supernode's rows (permuted numbering)
     std::vector<long> value_start_;  // per supernode, into value_
-    std::vector<long> place_;        // per stored entry of A: index into value_, or -1 (upper triangle)
+    std::vector<long> entry_start_;  // per supernode, into entry_
+    std::vector<std::pair<long, long>> entry_;  // its entries of A: (index in A's values, in its panel)
     std::vector<double> value_;      // the panels: L below the diagonal, D on it
     std::vector<long> top_;          // supernodes factored after both lanes, ascending
     std::vector<char> in_top_;
