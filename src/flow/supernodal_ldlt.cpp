@@ -175,9 +175,8 @@ std::vector<double> SupernodalLDLT::update_work() const {
     std::vector<long> link(supers, -1), next(supers, -1), cursor(supers, 0);
     std::vector<double> work(supers, 0.0);
     auto wait_for_next_row = [&](long d) {
-        if (cursor[d] == height(d)) return;
-        const long t = super_of_[row_[row_start_[d] + cursor[d]]];
-        next[d] = link[t], link[t] = d;
+        const long t = waits_for(d, cursor[d]);
+        if (t != -1) next[d] = link[t], link[t] = d;
     };
     for (long s = 0; s < supers; ++s) {
         for (long d = link[s]; d != -1;) {
@@ -192,6 +191,10 @@ std::vector<double> SupernodalLDLT::update_work() const {
         wait_for_next_row(s);
     }
     return work;
+}
+
+long SupernodalLDLT::waits_for(long d, long position) const {
+    return position == height(d) ? -1 : super_of_[row_[row_start_[d] + position]];
 }
 
 long SupernodalLDLT::rows_in(long d, long begin, long s) const {
@@ -261,8 +264,8 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
     if (!ok[0] || !ok[1]) return false;
     for (Lane& lane : lanes_)
         for (long d : lane.pending) {
-            const long s = super_of_[row_[row_start_[d] + cursor_[d]]];
-            next_[d] = link_[s], link_[s] = d;
+            const long t = waits_for(d, cursor_[d]);
+            next_[d] = link_[t], link_[t] = d;
         }
     for (long s : top_)
         if (!factor_supernode(s, a, lanes_[0], false)) return false;
@@ -272,8 +275,8 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
 bool SupernodalLDLT::factor_supernode(long s, const double* a, Lane& lane, bool defer) {
     // After an update or its own factorisation, a supernode waits for its next row's supernode.
     auto wait_for_next_row = [&](long d) {
-        if (cursor_[d] == height(d)) return;
-        const long t = super_of_[row_[row_start_[d] + cursor_[d]]];
+        const long t = waits_for(d, cursor_[d]);
+        if (t == -1) return;
         if (defer && in_top_[t])
             lane.pending.push_back(d);
         else

@@ -46,8 +46,6 @@ public:
     void solve(double* x) const;
 
     long rows() const { return static_cast<long>(order_.size()); }
-    /// Stored entries of the panels (L's nonzeros, diagonal blocks and explicit zeros included).
-    long stored() const { return static_cast<long>(value_.size()); }
     long supernodes() const { return static_cast<long>(first_.size()) - 1; }
 
 private:
@@ -73,6 +71,8 @@ private:
     /// The multiply-adds of each supernode's updates and panel (factorize()'s schedule without
     /// the arithmetic), for split().
     std::vector<double> update_work() const;
+    /// The supernode holding supernode d's row at `position` (the next one d updates), -1 past its last row.
+    long waits_for(long d, long position) const;
     /// How many of supernode d's rows, from its position begin on, lie in supernode s's columns.
     long rows_in(long d, long begin, long s) const;
     /// Subtracts supernode d's update of supernode s (from d's row cursor_[d] on) from s's panel.
