@@ -182,7 +182,7 @@ void FlowSolver::viscosity(double dt) {
         implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, line_rhs_, state_);
         return;
     }
-    if (!coupled_) coupled_.emplace(mesh_);
+    if (!coupled_) coupled_.emplace(mesh_, settings_.factorisation);
     coupled_->apply(mesh_, settings_, walls_, dt, closures_.eta, state_);
 }
 
