@@ -227,7 +227,9 @@ std::pair<double, double> dust_face(double u_dust) {
     AxisPressureFaces pf;
     pf.force.assign(faces, 0.0), pf.predictor.assign(faces, 0.0), pf.coupling.assign(faces, 0.0);
     pf.donor.assign(faces, 0.0), pf.flux.assign(faces, 0.0), pf.reversed.assign(faces, 0);
-    pressure_coupling(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf);
+    pf.value_lo.assign(faces, 0.0), pf.value_hi.assign(faces, 0.0);
+    face_velocity_predictor(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf);
+    face_donors(mesh, FlowSettings{}, 0, 1e-3, state, closures, nullptr, pf);
     const std::size_t f = grid.face_index(0, 2, 0, 0);
     return {pf.predictor[f], pf.donor[f]};
 }

@@ -1,6 +1,7 @@
 // The segregation modules on small hand-checkable grids: face visiting, eq. (64), the time step,
 // the reconstruction, and the configuration the kinematic drum reuses unchanged (a drum-shaped inside
 // mask, coefficients of random sign, a stream-function flow, compressible mass fluxes).
+#include "flow/convection.hpp"
 #include "core/error.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/column.hpp"

@@ -1,5 +1,6 @@
 #include "flow/convection.hpp"
 
+#include "core/error.hpp"
 #include "flow/face_balance.hpp"
 #include "flow/hllc.hpp"
 
@@ -100,11 +101,11 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
     double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
     const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
     mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
-        const double dPhi = face_balance(M, inv_h, i, ar), dE = face_balance(Ef, inv_h, i, ar);
+        const double dE = face_balance(Ef, inv_h, i, ar);
         double dm[3];
         for (int b = 0; b < 3; ++b) dm[b] = face_balance(mom_upper[b], mom_lower[b], inv_h, i, ar);
         const double Phi_start = Phi[c];
-        Phi[c] = Phi_start - dt * dPhi;  // the coupling identity (flow_solver.hpp)
+        Phi[c] = mass_balance(Phi_start, dt, M, inv_h, i, ar);  // the coupling identity (flow_solver.hpp)
         E[c] -= dt * dE;
         for (int b = 0; b < 3; ++b) m[b][c] += dt * (Phi_start * g_source[b] - dm[b]);
         if (source) {
@@ -129,6 +130,20 @@ void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double
     Frame still;  // no gravity and no rotation: the update of the fluxes alone
     still.gravity = 0.0;
     explicit_update(mesh, settings, still, FlowSource{}, 0.0, dt, faces, state);
+}
+
+void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi) {
+    const FlowMesh mesh(grid);
+    AxisWeights inv_h = axis_weights(mesh);
+    AxisFields fields{};
+    for (int a = 0; a < 3; ++a) {
+        if (M[a].empty()) inv_h[a] = 0.0;  // nothing along this axis
+        else if (M[a].size() != grid.faces(a)) throw InputError("apply_mass_fluxes: M needs one value per face");
+        fields[a] = M[a].data();
+    }
+    if (Phi.size() != grid.cells()) throw InputError("apply_mass_fluxes: Phi needs one value per cell");
+    double* out = Phi.data();
+    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { out[c] = mass_balance(out[c], dt, fields, inv_h, i, ar); });
 }
 
 }  // namespace granseg

@@ -12,6 +12,7 @@
 //               Phi is the coupling identity Phi_new = Phi - dt div M (flow/face_balance.hpp)
 #pragma once
 
+#include "core/face_fields.hpp"
 #include "flow/flow_mesh.hpp"
 #include "flow/flow_settings.hpp"
 #include "flow/flow_state.hpp"
@@ -39,5 +40,11 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
 /// semi-implicit step's transport, whose predictor already applied the forces.
 void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
                       FlowState& state);
+
+/// Phi = Phi - dt div M in every inside cell (mass_balance, flow/face_balance.hpp): what a consumer
+/// of the flow's hand-over (flow/flow_solver.hpp) gets bit for bit as the flow's Phi after the step,
+/// and the mass balance of kinematic set-ups without a flow solver. An empty M[axis] carries
+/// nothing; non-periodic domain-boundary faces count (open boundaries).
+void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi);
 
 }  // namespace granseg

@@ -1,6 +1,7 @@
 // The balance of a cell's face fluxes, written once for every kernel that needs it: the updates
-// (flow/convection.hpp), the bounds of the time step (flow/time_step.hpp) and the semi-implicit
-// step's explicit mass change, dust cap and Phi after the step (flow/semi_implicit.hpp).
+// and the hand-over's mass balance (flow/convection.hpp), the bounds of the time step
+// (flow/time_step.hpp) and the semi-implicit step's explicit mass change, dust cap and Phi after
+// the step (flow/semi_implicit.hpp).
 //
 //   solves      nothing over time: per cell, sums over its faces
 //   inputs      a face field per axis (one value per face, flow/flow_mesh.hpp order), a weight
@@ -8,7 +9,7 @@
 //               the cell (its index i in the row and the AxisRow of each axis)
 //   outputs     face_balance    sum_axis (F[upper face] - F[lower face]) w_axis  (w = 1/h: div F)
 //               face_outflow    sum_axis (max(0, F[upper]) + max(0, -F[lower])) w_axis  (what leaves)
-//               subtract_by_axis  x - w_x (F[upper] - F[lower]) - w_y (...) - w_z (...), axis by axis
+//               mass_balance    Phi - dt face_balance(M, 1/h): the mass balance of a step
 //   invariants  the axes are taken in the order x, y, z and each term is (difference) times w: a
 //               result is the same to the last bit wherever it is computed (the coupling identity
 //               of flow/flow_solver.hpp relies on the update and the hand-over rounding alike)
@@ -71,16 +72,12 @@ inline __attribute__((always_inline)) double face_outflow(const AxisFields& F, c
     });
 }
 
-/// x - (F[upper] - F[lower]) w_axis, subtracted one axis after the other (x, y, z): the update of
-/// a cell axis by axis, which rounds differently from x - face_balance(F, w).
-inline __attribute__((always_inline)) double subtract_by_axis(double x, const AxisFields& F, const AxisWeights& w,
-                                                              int i, const AxisRow* rows) {
-    for (int a = 0; a < 3; ++a) {
-        if (w[a] == 0.0) continue;
-        const std::size_t fl = rows[a].face0 + i, fu = fl + rows[a].face_step;
-        x -= (F[a][fu] - F[a][fl]) * w[a];
-    }
-    return x;
+/// Phi - dt sum_axis (M[upper] - M[lower])/h for one cell, with inv_h = axis_weights(mesh): the
+/// mass balance of a step, computed by this one function wherever it is needed (the flow's update,
+/// Phi after the step within it, the hand-over's apply_mass_fluxes), so all round it alike.
+inline __attribute__((always_inline)) double mass_balance(double Phi, double dt, const AxisFields& M,
+                                                          const AxisWeights& inv_h, int i, const AxisRow* rows) {
+    return Phi - dt * face_balance(M, inv_h, i, rows);
 }
 
 /// The data of one face field of every axis, e.g. axis_fields(faces, &AxisFaces::mass).

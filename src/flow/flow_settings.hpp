@@ -9,6 +9,7 @@
 
 #include "core/choice.hpp"
 #include "flow/frame.hpp"
+#include "transport/limiter.hpp"
 
 #include <array>
 #include <functional>
@@ -42,6 +43,17 @@ inline constexpr Choice<Factorisation> kFactorisations[] = {
     {Factorisation::simplicial, "simplicial", "Eigen's SimplicialLDLT, row by row on one thread"},
 };
 
+/// How the semi-implicit step carries the mass balance: which Phi a face's mass flux M = Phi_d U takes
+/// (docs/flow_solver.md, S6; docs/flow_solver_choices.md, "The transport"). The coupled drum carries phi
+/// with the same scheme (tumbler/coupled_tumbler.hpp).
+enum class Transport { donor_cell, muscl };
+inline constexpr Choice<Transport> kTransports[] = {
+    {Transport::donor_cell, "donor-cell",
+     "first-order upwind: a face carries the Phi of the cell the flow leaves (the paper's order)"},
+    {Transport::muscl, "muscl",
+     "limited linear reconstruction with a half-step predictor (MUSCL-Hancock): second order, bounded"},
+};
+
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
     TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 1)
@@ -54,6 +66,8 @@ struct FlowSettings {
     double dt_max = 2e-3;       // s (the drum's angle against dt_max: docs/flow_solver.md)
     double pressure_tolerance = 1e-2;  // semi-implicit: Newton stops at this share of the step's largest explicit mass change
     double phi_hat = 0.5;       // small-particle share used for Phi_rcp, Phi_co when no phi field is set
+    std::optional<Transport> transport;  // unset: muscl with semi-implicit; the explicit step's HLLC fluxes are donor cell
+    Limiter limiter = Limiter::mc;                // of the reconstruction with transport = muscl
 };
 
 /// The viscosity solve `s` asks for, or the default of its time stepping (the semi-implicit
@@ -61,6 +75,14 @@ struct FlowSettings {
 inline ViscositySolve viscosity_solve(const FlowSettings& s) {
     return s.viscosity ? *s.viscosity
                        : s.time_stepping == TimeStepping::semi_implicit ? ViscositySolve::coupled : ViscositySolve::split;
+}
+
+/// The transport `s` asks for, or the default of its time stepping: muscl for the semi-implicit
+/// step, donor-cell for the explicit one (its HLLC fluxes carry the upwind values; muscl needs
+/// the semi-implicit step, FlowSolver and the scene reader refuse it there).
+inline Transport transport_scheme(const FlowSettings& s) {
+    return s.transport ? *s.transport
+                       : s.time_stepping == TimeStepping::semi_implicit ? Transport::muscl : Transport::donor_cell;
 }
 
 /// Sources added to the conserved variables (manufactured solutions): called per inside cell with

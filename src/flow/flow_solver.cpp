@@ -47,6 +47,11 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         throw InputError("FlowSolver: a rotating frame needs walls (not periodic ends) along x and z");
     if (!(settings_.T_floor > 0.0) || !(settings_.Phi_vacuum > 0.0) || !(settings_.cfl > 0.0))
         throw InputError("FlowSolver: T_floor, Phi_vacuum and cfl must be > 0");
+    if (transport_scheme(settings_) == Transport::muscl) {
+        if (settings_.time_stepping != TimeStepping::semi_implicit)
+            throw InputError("FlowSolver: transport = muscl needs the semi-implicit time stepping");
+        reconstruction_.emplace(g, settings_.limiter);
+    }
 
     const std::size_t cells = g.cells();
     for (auto* f : {&state_.Phi, &state_.E, &state_.T, &Phi_before_, &closures_.p, &closures_.c, &closures_.eta,
@@ -74,7 +79,8 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         for (auto* f : {&F.mass, &F.energy, &F.mom_below, &F.p, &F.speed, &potential_.face[a]}) f->assign(faces, 0.0);
         for (int b = 0; b < 3; ++b) F.mom[b].assign(faces, 0.0);
         AxisPressureFaces& P = pressure_[a];
-        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.donor, &P.flux})
+        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.value_lo,
+                        &P.value_hi, &P.donor, &P.flux})
             f->assign(faces, 0.0);
         P.reversed.assign(faces, 0);
     }

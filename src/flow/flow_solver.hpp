@@ -94,6 +94,7 @@
 #include "flow/semi_implicit.hpp"
 #include "flow/temperature.hpp"
 #include "flow/time_step.hpp"
+#include "transport/muscl_hancock.hpp"
 
 #include <array>
 #include <chrono>
@@ -219,8 +220,11 @@ private:
     /// S4. The pressure correction with its donor passes; whether the fluxes keep every bound
     /// (false also when the pressure equation did not converge).
     bool pressure_correct(double dt);
-    /// S4. U*, donors, K of every face and the explicit mass change r_c.
-    void face_predictor(double dt);
+    /// S4. U* of every face, and with transport = muscl the face values of Phi for them (once per
+    /// attempt: the donor passes change only the donors).
+    void face_velocities(double dt);
+    /// S4. Donors, K of every face and the explicit mass change r_c.
+    void face_donors_and_change(double dt);
     /// S4. The pressure solve for dp_ (counted; `repeat`: dp_ solved this step's equation already);
     /// whether it converged.
     bool solve_pressure(bool repeat);
@@ -276,6 +280,7 @@ private:
     DiffusionLines lines_;
     TemperatureSolver temperature_;
     std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
+    std::optional<MusclHancock> reconstruction_;  // transport = muscl: the face values of Phi
     FlowTimers timers_;
     FlowCounters counters_;
 };

@@ -3,6 +3,7 @@
 #include "flow/face_balance.hpp"
 #include "flow/hllc.hpp"
 #include "flow/transport_flux.hpp"
+#include "transport/muscl_hancock.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,17 +81,23 @@ void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& st
     });
 }
 
-void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt, const FlowState& state,
-                       const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
-                       AxisPressureFaces& pf) {
+namespace {
+/// Whether material can cross an interior face: either of its cells holds more than Phi_vacuum.
+bool open_face(const MeshFace& F, const double* Phi, double Phi_vac) {
+    return F.kind == kInterior && std::max(Phi[F.lo], Phi[F.hi]) > Phi_vac;
+}
+}  // namespace
+
+void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt,
+                             const FlowState& state, const CellClosures& closures,
+                             const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf) {
     const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
     const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
     const double* Phi_co = closures.Phi_co.data();
     mesh.for_each_face(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
-        const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
-        if (F.kind != kInterior || !(std::max(Phi[lo], Phi[hi]) > Phi_vac)) {  // open if either cell holds material
-            pf.predictor[f] = pf.coupling[f] = pf.donor[f] = pf.flux[f] = 0.0;
+        if (!open_face(F, Phi, Phi_vac)) {
+            pf.predictor[f] = 0.0;
             return;
         }
         // The mass-weighted mean; but a donor holding (almost) nothing moves its material at its
@@ -100,18 +107,40 @@ void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int a
         // velocity would carry the other cell's material after it).
         const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
         const std::size_t up = mean > 0.0 ? lo : hi;
-        const bool dilute = is_dust(Phi[up], Phi_co[up]);
-        const double U = dilute ? (u[up] * mean > 0.0 ? u[up] : 0.0)
-                                : mean + dt * pf.force[f] / (h * Phi_f) - mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
+        const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
+        pf.predictor[f] = is_dust(Phi[up], Phi_co[up])
+                              ? (u[up] * mean > 0.0 ? u[up] : 0.0)
+                              : mean + dt * pf.force[f] / (h * Phi_f) - mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
+    });
+}
+
+void face_donors(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt, const FlowState& state,
+                 const CellClosures& closures, const MusclHancock* reconstruction, AxisPressureFaces& pf) {
+    const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
+    const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
+    const double* from_lower = reconstruction ? reconstruction->from_lower()[a].data() : nullptr;
+    const double* from_upper = reconstruction ? reconstruction->from_upper()[a].data() : nullptr;
+    mesh.for_each_face(a, [&](const MeshFace& F) {
+        const std::size_t f = F.f, lo = F.lo, hi = F.hi;
+        if (!open_face(F, Phi, Phi_vac)) {
+            pf.coupling[f] = pf.donor[f] = pf.flux[f] = 0.0;
+            return;
+        }
+        // What each cell gives the face: its Phi (donor cell), or its reconstruction; a face with
+        // dust on either side is first order (dust takes its velocity from the mass that enters it).
+        const bool dust_lo = is_dust(Phi[lo], Phi_co[lo]), dust_hi = is_dust(Phi[hi], Phi_co[hi]);
+        const bool reconstructed = from_lower && !dust_lo && !dust_hi;
+        const double value_lo = reconstructed ? from_lower[f] : Phi[lo];
+        const double value_hi = reconstructed ? from_upper[f] : Phi[hi];
+        const double U = pf.predictor[f];
         const bool careful = pf.reversed[f] || U == 0.0;
-        const double donor = careful ? std::min(Phi[lo], Phi[hi]) : U > 0.0 ? Phi[lo] : Phi[hi];
-        pf.predictor[f] = U;
+        const double donor = careful ? std::min(value_lo, value_hi) : U > 0.0 ? value_lo : value_hi;
+        pf.value_lo[f] = value_lo, pf.value_hi[f] = value_hi;
         pf.donor[f] = donor;
         pf.flux[f] = donor * U;
         // Between two dust cells the face stays explicit (dry face): the pressure increments there
         // are only an extension of their neighbours' and would push on almost no mass.
-        const bool dust = is_dust(Phi[lo], Phi_co[lo]) && is_dust(Phi[hi], Phi_co[hi]);
-        pf.coupling[f] = dust ? 0.0 : (dt / h) * (dt / h) * donor / Phi_f;
+        pf.coupling[f] = dust_lo && dust_hi ? 0.0 : (dt / h) * (dt / h) * donor / (0.5 * (Phi[lo] + Phi[hi]));
     });
 }
 
@@ -120,16 +149,15 @@ void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& 
     const AxisWeights rate = axis_weights(mesh, dt);
     double* r = change.data();
     mesh.for_inside_cells(
-        [&](std::size_t c, int i, const AxisRow* ar) { r[c] = subtract_by_axis(0.0, flux, rate, i, ar); });
+        [&](std::size_t c, int i, const AxisRow* ar) { r[c] = -face_balance(flux, rate, i, ar); });
 }
 
-long mark_reversed_faces(const FlowMesh& mesh, int a, const FlowState& state, const AxisFaces& faces,
-                         AxisPressureFaces& pf) {
+long mark_reversed_faces(const FlowMesh& mesh, int a, const AxisFaces& faces, AxisPressureFaces& pf) {
     long marked = 0;
     for (const MeshFace& F : mesh.faces[a]) {
         const std::size_t f = F.f;
         if (F.kind != kInterior || pf.reversed[f] || pf.donor[f] == 0.0) continue;
-        const double M = faces.mass[f], source = M > 0.0 ? state.Phi[F.lo] : state.Phi[F.hi];
+        const double M = faces.mass[f], source = M > 0.0 ? pf.value_lo[f] : pf.value_hi[f];
         if (M != 0.0 && pf.donor[f] > kDonorExcess * source) pf.reversed[f] = 1, ++marked;
     }
     return marked;
@@ -173,11 +201,11 @@ void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, c
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after) {
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
-    const AxisWeights rate = axis_weights(mesh, dt);
+    const AxisWeights inv_h = axis_weights(mesh);
     const double* before = Phi.data();
     double* after = Phi_after.data();
     mesh.for_inside_cells(
-        [&](std::size_t c, int i, const AxisRow* ar) { after[c] = subtract_by_axis(before[c], M, rate, i, ar); });
+        [&](std::size_t c, int i, const AxisRow* ar) { after[c] = mass_balance(before[c], dt, M, inv_h, i, ar); });
 }
 
 void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const AxisPressureFaces& pf,

@@ -27,17 +27,20 @@
 //    moves), Coriolis, sources, then viscosity, giving u*; A is the part of the change that came
 //    from the forces (before viscosity). A wall pushes back on a cell moving towards it with the
 //    implicit acoustic impedance p' + Phi c u_n/(1 + c dt/h), which never reverses u_n.
-// 2. Face predictor (pressure_coupling):
+// 2. Face predictor (face_velocity_predictor, then face_donors):
 //        U* = V* + dt D/(h Phi_f) - V_A,
 //    V*, V_A the normal components of u* and A at the face: the mass-weighted mean
 //    (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi), or the donor's own value when the donor holds
 //    (almost) no material (dust left behind by a moving cell is not dragged along; 0 where that
 //    value points away from the face: a gap opens and carries nothing). The face
 //    moves as its cells do after the viscous step, except that the cells' shared forces are
-//    replaced by the face's own compact D (Rhie-Chow: no checkerboard). The donor Phi_d is the
-//    cell U* leaves, or the smaller of the two when U* = 0 or when the pressure reversed the flow
-//    on this face onto a cell that holds clearly less (then the solve is repeated), so that no
-//    cell gives much more than its own Phi times |U| dt/h. The explicit flux M_x = Phi_d U* and
+//    replaced by the face's own compact D (Rhie-Chow: no checkerboard). Each cell gives the face a
+//    value of Phi: its own (transport = donor-cell), or its limited reconstruction at the face
+//    half-way through the step for the velocities U* (transport = muscl, transport/muscl_hancock.hpp;
+//    a dust cell gives its own Phi). The donor Phi_d is the value of the cell U* leaves, or the
+//    smaller of the two when U* = 0 or when the pressure reversed the flow on this face onto a cell
+//    that gives clearly less (then the solve is repeated), so that no cell gives much more than it
+//    holds times |U| dt/h. The explicit flux M_x = Phi_d U* and
 //    the coupling K = (dt/h)^2 Phi_d/Phi_f define the pressure equation
 //    (flow/pressure_solver.hpp) for the increments dp.
 // 3. Corrected faces: U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9 for the increment), M = Phi_d U
@@ -61,6 +64,8 @@
 
 namespace granseg {
 
+class MusclHancock;
+
 /// Per axis and face, what the semi-implicit fluxes are built from.
 struct AxisPressureFaces {
     std::vector<double> p_lo, p_hi;        // reconstructed pressures p' of the lower and upper cell
@@ -68,6 +73,7 @@ struct AxisPressureFaces {
     std::vector<double> force;             // D, limited on dilute faces
     std::vector<double> predictor;         // U* for the current dt
     std::vector<double> coupling;          // K
+    std::vector<double> value_lo, value_hi;  // the Phi the lower / upper cell gives the face (its own, or reconstructed)
     std::vector<double> donor;             // Phi_d
     std::vector<double> flux;              // the explicit flux M_x = Phi_d U*
     std::vector<unsigned char> reversed;   // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
@@ -88,20 +94,25 @@ void pressure_faces(const FlowMesh& mesh, int axis, double gravity, const FlowSt
 void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
                      const AxisPressureFaces& pf, AxisFaces& faces);
 
-/// Part 2 for `axis`: U*, donor, K and the explicit flux M_x = Phi_d U* of every face from the
-/// predicted state (u*) and the force part A of the predictor.
-void pressure_coupling(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
-                       const CellClosures& closures, const std::array<std::vector<double>, 3>& A,
-                       AxisPressureFaces& pf);
+/// Part 2a for `axis`: U* of every face (0 on walls and faces without material) from the predicted
+/// state (u*) and the force part A of the predictor.
+void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt,
+                             const FlowState& state, const CellClosures& closures,
+                             const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf);
+
+/// Part 2b for `axis`, after U* of every axis: the value each cell gives the face (its Phi, or with a
+/// reconstruction its MUSCL-Hancock face value for U*, transport/muscl_hancock.hpp; a dust cell its
+/// own Phi), the donor Phi_d, K and the explicit flux M_x = Phi_d U*.
+void face_donors(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
+                 const CellClosures& closures, const MusclHancock* reconstruction, AxisPressureFaces& pf);
 
 /// Part 2, per inside cell: the mass change of the explicit fluxes,
-/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h, subtracted axis by axis (flow/face_balance.hpp).
+/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h (flow/face_balance.hpp).
 void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change);
 
-/// Marks the faces whose mass flux leaves a cell holding clearly less than the donor it was
-/// computed with (the pressure reversed the flow there); returns how many it marked.
-long mark_reversed_faces(const FlowMesh& mesh, int axis, const FlowState& state, const AxisFaces& faces,
-                         AxisPressureFaces& pf);
+/// Marks the faces whose mass flux leaves a cell that gives the face clearly less than the donor it
+/// was computed with (the pressure reversed the flow there); returns how many it marked.
+long mark_reversed_faces(const FlowMesh& mesh, int axis, const AxisFaces& faces, AxisPressureFaces& pf);
 
 /// Below this share of Phi_co a cell is dust: as a donor it carries its material at its own
 /// velocity, and its outflow is capped (dust_outflow_scale) instead of bounding dt (assumption F11).
@@ -125,8 +136,8 @@ void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const 
 void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, const CellClosures& closures,
                       std::vector<double>& scale, FlowFaces& faces);
 
-/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell, subtracted axis by axis
-/// (flow/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
+/// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell (mass_balance,
+/// flow/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after);
 

@@ -81,8 +81,9 @@ void FlowSolver::predictor_forces(double dt) {
 }
 
 bool FlowSolver::pressure_correct(double dt) {
+    face_velocities(dt);
     for (int pass = 1;; ++pass) {
-        face_predictor(dt);
+        face_donors_and_change(dt);
         if (!solve_pressure(pass > 1)) return false;
         // Faces the pressure reversed onto a cell with clearly less material took the smaller
         // donor: solve again, up to kDonorPasses times.
@@ -93,10 +94,24 @@ bool FlowSolver::pressure_correct(double dt) {
     }
 }
 
-void FlowSolver::face_predictor(double dt) {
+void FlowSolver::face_velocities(double dt) {
+    {
+        Stopwatch watch(timers_, FlowStage::pressure_faces);
+        for (int a = 0; a < 3; ++a)
+            if (mesh_.active[a])
+                face_velocity_predictor(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
+    }
+    if (!reconstruction_) return;
+    Stopwatch watch(timers_, FlowStage::transport);
+    reconstruction_->face_values(state_.Phi, {&pressure_[0].predictor, &pressure_[1].predictor, &pressure_[2].predictor},
+                                 dt, MusclHancock::Form::conservative);
+}
+
+void FlowSolver::face_donors_and_change(double dt) {
     Stopwatch watch(timers_, FlowStage::pressure_faces);
+    const MusclHancock* reconstruction = reconstruction_ ? &*reconstruction_ : nullptr;
     for (int a = 0; a < 3; ++a)
-        if (mesh_.active[a]) pressure_coupling(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
+        if (mesh_.active[a]) face_donors(mesh_, settings_, a, dt, state_, closures_, reconstruction, pressure_[a]);
     explicit_mass_change(mesh_, dt, pressure_, mass_change_);
 }
 
@@ -118,7 +133,7 @@ long FlowSolver::corrected_fluxes(double dt) {
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) {
             semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, Phi_after_, faces_[a]);
-            reversed += mark_reversed_faces(mesh_, a, state_, faces_[a], pressure_[a]);
+            reversed += mark_reversed_faces(mesh_, a, faces_[a], pressure_[a]);
         }
     return reversed;
 }

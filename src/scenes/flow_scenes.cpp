@@ -30,6 +30,13 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.dt_max = scene.number(s, "dt_max", Range::open(0, 10), f.dt_max);
     f.pressure_tolerance = scene.number(s, "pressure_tolerance", Range::open(0, 1), f.pressure_tolerance);
     if (mixture) f.phi_hat = scene.number(s, "phi_hat", Range::closed(0, 1), f.phi_hat);
+    f.transport = parse_choice(kTransports, scene.choice(s, "transport", choice_names(kTransports),
+                                                         choice_name(kTransports, transport_scheme(f))),
+                               "transport");
+    f.limiter = parse_limiter(scene.choice(s, "limiter", limiter_names(), limiter_name(f.limiter)));
+    if (transport_scheme(f) == Transport::muscl && f.time_stepping != TimeStepping::semi_implicit)
+        scene.fail(s, "transport", "\"muscl\" with time_stepping = \"explicit\"",
+                   "\"donor-cell\" with the explicit step; \"muscl\" needs \"semi-implicit\"");
     if (!(f.dt_min < f.dt_max)) scene.fail(s, "dt_min", format_number(f.dt_min) + " >= dt_max", "dt_min < dt_max");
     return f;
 }

@@ -132,14 +132,6 @@ void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const 
     BulkTransport(grid).step(Phi_old, refs(M), inflow_phi_hat, dt, phi);
 }
 
-void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi) {
-    for (int axis = 0; axis < 3; ++axis)
-        if (!M[axis].empty()) {
-            check_face_field(grid, axis, M[axis], "M");
-            apply_flux_difference(grid, axis, M[axis], dt, Phi);
-        }
-}
-
 double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFieldRefs& M, double cfl,
                       double Phi_min) {
     std::vector<double> outflow(grid.cells(), 0.0);  // sum_out |M|/h per cell

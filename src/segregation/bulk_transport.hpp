@@ -30,11 +30,6 @@
 
 namespace granseg {
 
-/// Read-only face fields, one pointer per axis (nullptr or an empty vector: nothing along that
-/// axis): the flow solver's mass fluxes are read where they are, without a copy per step.
-using FaceFieldRefs = std::array<const std::vector<double>*, 3>;
-inline FaceFieldRefs refs(const FaceFields& f) { return {&f[0], &f[1], &f[2]}; }
-
 /// The donor-cell bulk step (see above) with its work space kept between steps.
 class BulkTransport {
 public:
@@ -63,10 +58,6 @@ private:
 /// One bulk step with a BulkTransport of its own (arguments and exceptions as BulkTransport::step).
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
                     const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi);
-
-/// Phi_new from the same fluxes (the mass balance the contract assumes); used by tests and by
-/// kinematic set-ups that have no flow solver.
-void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi);
 
 /// cfl times the largest dt with dt sum_out |M|/h <= Phi_old in every inside cell with
 /// Phi_old >= Phi_min (+infinity if nothing flows out of any of them).

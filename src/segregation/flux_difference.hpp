@@ -14,21 +14,14 @@
 // domain-boundary faces (none for walls, where F = 0).
 #pragma once
 
+#include "core/face_fields.hpp"
 #include "core/grid.hpp"
 
 #include <array>
 #include <cstddef>
-#include <limits>
 #include <vector>
 
 namespace granseg {
-
-/// One face field per axis (grid.faces(axis) values, grid.face_index order); an empty vector
-/// means "nothing along this axis".
-using FaceFields = std::array<std::vector<double>, 3>;
-
-/// Marks a missing neighbour (non-periodic domain boundary).
-constexpr std::size_t kNoCell = std::numeric_limits<std::size_t>::max();
 
 /// A face and the cells below and above it along its axis (kNoCell at a domain boundary).
 /// `duplicate` marks the last face layer of a periodic axis, the same physical face as layer 0.

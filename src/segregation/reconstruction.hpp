@@ -35,7 +35,4 @@ inline double composition(double phi, double Phi) { return Phi > 0.0 ? std::clam
 void reconstruct_faces(const Grid& grid, int axis, const std::vector<double>& phi, const std::vector<double>& Phi,
                        Limiter limiter, std::vector<double>& at_lower, std::vector<double>& at_upper);
 
-/// The limited slope from the one-sided differences `below` and `above` (0 at an extremum).
-double limited_slope(double below, double above, Limiter limiter);
-
 }  // namespace granseg

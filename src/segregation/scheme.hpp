@@ -7,6 +7,7 @@
 
 #include "core/choice.hpp"
 #include "riemann/segregation_flux.hpp"
+#include "transport/limiter.hpp"
 
 #include <cstddef>
 #include <string>
@@ -89,13 +90,6 @@ inline bool preserves_bounds(SegregationScheme s) { return s.row().bounded; }
 inline bool uses_interface_values(SegregationScheme s) { return s.row().interface_values; }
 inline int scheme_order(SegregationScheme s) { return s.row().order; }
 
-/// Slope limiter of the second-order reconstruction of phi_hat.
-enum class Limiter { minmod, mc };
-inline constexpr Choice<Limiter> kLimiters[] = {
-    {Limiter::minmod, "minmod", "the smaller one-sided slope (most diffusive)"},
-    {Limiter::mc, "mc", "monotonized central (default)"},
-};
-
 /// Bulk transport of a scene without a flow solver: the coupling contract's donor cell, or
 /// flux-corrected transport (bulk_transport_fct.hpp).
 enum class BulkScheme { donor_cell, fct };
@@ -104,9 +98,6 @@ inline constexpr Choice<BulkScheme> kBulkSchemes[] = {
     {BulkScheme::fct, "fct", "flux-corrected transport (Zalesak), assumption T5 (tumbler-kinematic default)"},
 };
 
-inline std::vector<std::string> limiter_names() { return choice_names(kLimiters); }
-inline Limiter parse_limiter(const std::string& name) { return parse_choice(kLimiters, name, "limiter"); }
-inline std::string limiter_name(Limiter l) { return choice_name(kLimiters, l); }
 inline std::vector<std::string> bulk_scheme_names() { return choice_names(kBulkSchemes); }
 inline BulkScheme parse_bulk_scheme(const std::string& name) { return parse_choice(kBulkSchemes, name, "bulk scheme"); }
 inline std::string bulk_scheme_name(BulkScheme b) { return choice_name(kBulkSchemes, b); }

@@ -68,6 +68,7 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
       inside_(flow_.grid().cells(), 1),
       parallel_(flow_.grid().cells() >= kParallelCells) {
     if (!flow_.grid().inside.empty()) inside_ = flow_.grid().inside;
+    if (transport_scheme(setup.flow) == Transport::muscl) fct_.emplace(flow_.grid(), setup.flow.limiter);
     if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
     if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("tumbler: bulk CFL outside (0, 1]");
     if (!preserves_bounds(setup.segregation.scheme))
@@ -104,7 +105,8 @@ double CoupledTumbler::step(double t_end) {
     auto t1 = clock::now();
     timers_.flow += seconds(t0, t1);
     const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
-    bulk_courant_ += bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, phi_, setup_.Phi_min);  // 2. (eq. 65, F^bulk)
+    bulk_courant_ += fct_ ? fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, phi_, setup_.Phi_min)
+                          : bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, phi_, setup_.Phi_min);  // 2. (eq. 65, F^bulk)
     clip_bulk_round_off();
     t0 = clock::now();
     timers_.bulk += seconds(t1, t0);
@@ -123,8 +125,9 @@ void CoupledTumbler::clip_bulk_round_off() {
     const unsigned char* in = inside_.data();
     const double *Phi = flow_.Phi().data(), *before = flow_.Phi_before().data();
     double* phi = phi_.data();
-    // The donor-cell step keeps phi_hat in [0, 1] exactly; its rounding is a few ulps of the amounts
-    // that pass through a cell: relative to the cell's larger Phi (before or after the step).
+    // The donor-cell step keeps phi_hat in [0, 1] exactly, and so does the limited antidiffusion;
+    // their rounding is a few ulps of the amounts that pass through a cell: relative to the cell's
+    // larger Phi (before or after the step).
     double excess = -INFINITY, lowest = INFINITY, worst = 0.0;  // worst: largest correction / allowance
     long nonfinite = 0;
 #pragma omp parallel for reduction(max : excess, worst) reduction(min : lowest) reduction(+ : nonfinite) schedule(static) if (parallel_)

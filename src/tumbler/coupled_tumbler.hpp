@@ -12,10 +12,13 @@
 // step of the coupled model:
 //   1. flow step (FlowSolver::step): Phi, u, T from t to t + dt with the closures of the current
 //      phi_hat; it hands over the face mass fluxes M with Phi_new = Phi_old - dt div_h M;
-//   2. bulk transport: phi carried by the same M, donor cell in phi_hat = phi/Phi_old, written
-//      like the mass balance (BulkTransport), so phi_new/Phi_new is a convex combination of old
-//      phi_hat values (the flow keeps dt sum_out M/h <= 0.9 Phi_old) and a uniform phi_hat stays
-//      uniform to round-off (eq. 65, F^bulk; assumption G1);
+//   2. bulk transport: phi carried by the same M with the flow's transport scheme (eq. 65, F^bulk;
+//      assumption G1). Donor cell: donor cell in phi_hat = phi/Phi_old, written like the mass
+//      balance (BulkTransport), so phi_new/Phi_new is a convex combination of old phi_hat values
+//      (the flow keeps dt sum_out M/h <= 0.9 Phi_old) and a uniform phi_hat stays uniform to
+//      round-off. muscl: that donor-cell step plus the limited antidiffusion of a MUSCL-Hancock flux
+//      in phi_hat (FctBulkTransport, assumption T5), so phi_new/Phi_new stays within the local
+//      extremes of the old and the donor-cell phi_hat;
 //   3. segregation sub-step with Phi and T frozen (eq. 52b), when due (below): per cell
 //      a = S^sl = -S0 sqrt(T) (d_s . g) d_s (eq. 46) with T from the flow and d_s (Sect. 2.3) from
 //      the flow's velocity gradient and its velocity, both relative to the drum, so the rotation
@@ -41,12 +44,14 @@
 #include "closures/material.hpp"
 #include "flow/flow_solver.hpp"
 #include "segregation/bulk_transport.hpp"
+#include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/segregation_solver.hpp"
 #include "tumbler/drum.hpp"
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace granseg {
@@ -133,7 +138,8 @@ private:
     CoupledTumblerSetup setup_;
     InitialMixture initial_;  // before flow_, which is built with its mean
     FlowSolver flow_;
-    BulkTransport bulk_;
+    BulkTransport bulk_;                     // transport = donor-cell
+    std::optional<FctBulkTransport> fct_;    // transport = muscl
     FaceFields no_inflow_;  // closed drum: nothing enters through a domain boundary
     SegregationSolver segregation_;
     std::vector<unsigned char> inside_;  // 1 for inside cells

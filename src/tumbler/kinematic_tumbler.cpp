@@ -69,7 +69,7 @@ void KinematicTumbler::step(double dt, const std::function<void(const std::vecto
         throw InputError("kinematic tumbler: step " + format_number(dt) + " outside (0, time_step()]");
     // Phi_old = Phi_new = Phi: the discrete divergence of M vanishes (kinematic_flow.hpp).
     if (bulk_ == BulkScheme::fct)
-        fct_.step(frozen_.Phi, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk; assumption T5)
+        fct_.step(frozen_.Phi, frozen_.Phi, refs(fields_.M), no_inflow_, dt, phi_);  // (eq. 65, F^bulk; assumption T5)
     else
         transport_bulk(fields_.grid, frozen_.Phi, fields_.M, no_inflow_, dt, phi_);  // (eq. 65, F^bulk)
     bulk_updates_ += static_cast<long long>(bed_cells_);

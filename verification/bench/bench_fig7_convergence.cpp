@@ -21,6 +21,7 @@
 //   the default is the real study, long (see README.md); a test of everything in about two minutes:
 //   --cells 25,35,50 --explicit-cells 25,35 --t-end 4 --average-from 2 --jitter-window 1
 #include "core/error.hpp"
+#include "flow/flow_settings.hpp"
 #include "harness/fig7_core.hpp"
 #include "harness/fig7_report.hpp"
 #include "harness/fig7_study.hpp"
@@ -82,6 +83,7 @@ Fig7Options parse(int argc, char** argv) {
         "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
         "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs")(
         "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
+        "transport", po::value(&o.transport)->default_value(o.transport), "[flow] transport of the default-stepping runs (\"\": the scene's)")(
         "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
     po::variables_map vm;
     try {
@@ -105,6 +107,9 @@ Fig7Options parse(int argc, char** argv) {
         bad_option("jitter-window", fig7_number(o.jitter_window), "0 < jitter_window <= t_end");
     if (!(o.T_floor_low > 0.0 && o.T_floor_low < 1e-2)) bad_option("T-floor-low", fig7_number(o.T_floor_low), "0 < T < 0.01");
     if (o.threads < 1 || o.threads > 256) bad_option("threads", std::to_string(o.threads), "1..256");
+    const std::vector<std::string> transports = choice_names(kTransports);
+    if (!o.transport.empty() && std::find(transports.begin(), transports.end(), o.transport) == transports.end())
+        bad_option("transport", "\"" + o.transport + "\"", "\"\", " + transports[0] + ", " + transports[1]);
     return o;
 }
 

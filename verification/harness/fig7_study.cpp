@@ -85,6 +85,7 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     r.insert_or_assign("frames", 0), r.insert_or_assign("vtk", false);
     toml::table& flow = section("flow");
     if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
+    else if (!o.transport.empty()) flow.insert_or_assign("transport", o.transport);
     if (run.dt_factor != 1.0) {
         const double dt_max = flow["dt_max"].value_or(FlowSettings{}.dt_max);
         flow.insert_or_assign("dt_max", run.dt_factor * dt_max);

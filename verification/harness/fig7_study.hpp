@@ -28,6 +28,7 @@ struct Fig7Options {
     double jitter_window = 2.5;                  // s before t_end over which a value at t_end jitters
     double T_floor_low = 1e-14;                  // m^2/s^2, the floor run's T_floor
     int threads = 2;
+    std::string transport;                       // [flow] transport of every run ("": the scene's)
     bool reuse = false;                          // reuse a run whose scene text is unchanged
 };
 
