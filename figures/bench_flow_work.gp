@@ -1,4 +1,4 @@
-# Work against error of the flow solver's two time-stepping modes (issue 12, Sect. 3): error
+# Work against error of the flow solver's two time-stepping modes (docs/flow_solver.md Sect. 3): error
 # against CPU time of the solve (one thread, median of 3 runs), one curve per mode and time-step
 # rule, the resolution written at each point.
 # needs: bench_flow_work

@@ -1,5 +1,5 @@
 // The segregation modules on small hand-checkable grids: face visiting, eq. (64), the time step,
-// the reconstruction, and the configuration issue 5 reuses unchanged (a drum-shaped inside
+// the reconstruction, and the configuration the kinematic drum reuses unchanged (a drum-shaped inside
 // mask, coefficients of random sign, a stream-function flow, compressible mass fluxes).
 #include "flow/convection.hpp"
 #include "core/error.hpp"
@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(reconstruction_stays_between_neighbours_and_averages_to_phi
     BOOST_TEST(limited_slope(0.1, -0.3, Limiter::mc) == 0.0);
 }
 
-// Issue 5 reuses this set-up unchanged: a drum, a_k of random sign per cell, a rotation.
+// The kinematic drum (src/tumbler/) reuses this set-up unchanged: a drum, a_k of random sign per cell, a rotation.
 BOOST_AUTO_TEST_CASE(drum_with_random_sign_coefficients_keeps_bounds_and_mass) {
     const Grid g = drum(24);
     std::mt19937 random(5);
@@ -181,7 +181,7 @@ BOOST_AUTO_TEST_CASE(drum_with_random_sign_coefficients_keeps_bounds_and_mass) {
     }
 }
 
-// The kinematic rolling drum of issue 5 (src/tumbler/) drives the bulk step and the split
+// The kinematic rolling drum (src/tumbler/) drives the bulk step and the split
 // segregation step unchanged: its face fields are FaceFields, its grid a Grid with a bed mask.
 BOOST_AUTO_TEST_CASE(kinematic_drum_of_issue5_drives_the_steps_unchanged) {
     const RollingDrumFields drum = discretize(RollingDrumFlow(RollingDrumParameters{}), 40, 0.6);

@@ -1,13 +1,20 @@
 // The supernodal LDL^T of the coupled viscosity (flow/supernodal_ldlt.hpp) against Eigen's
 // simplicial LDL^T (a different algorithm on the same matrix): viscosity-like matrices
 // Phi + dt div(eta grad) on a disc and on a 3-D box, with eta spread over four decades and
-// decoupled identity rows (empty cells); the two lanes on threads or one after the other give the
-// same bits; a matrix that is not positive definite is refused.
+// decoupled identity rows (empty cells); factorised again with new values over eight decades (the
+// drum's matrix spans about eight) and solved, as every step does; the two lanes on two threads
+// or one after the other give the same bits; a matrix that is not positive definite is refused,
+// in a wide panel (dense Cholesky) and in a narrow one (column by column); Eigen's products in a
+// lane open no threads of their own.
 #include "flow/supernodal_ldlt.hpp"
 
 #include <boost/test/unit_test.hpp>
 
 #include <Eigen/SparseCholesky>
+
+#include "core/error.hpp"
+
+#include <omp.h>
 
 #include <cmath>
 #include <random>
@@ -18,11 +25,12 @@ using Matrix = SupernodalLDLT::Matrix;
 namespace {
 
 /// Phi + sum_faces w (e_a - e_b)(e_a - e_b)^T on the cells of an nx x ny x nz box inside the
-/// ball of the box's inscribed sphere (a disc when ny = 1); w = 10^U(0, 4); every `empty`-th cell
-/// is an empty cell: an identity row without couplings.
-Matrix viscosity_like(int nx, int ny, int nz, int empty, unsigned seed) {
+/// ball of the box's inscribed sphere (a disc when ny = 1); w = 10^U(0, decades); every `empty`-th
+/// cell is an empty cell: an identity row without couplings. The pattern depends on the sizes and
+/// `empty` only, the values on `seed`.
+Matrix viscosity_like(int nx, int ny, int nz, int empty, unsigned seed, double spread = 4.0) {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> decades(0.0, 4.0), mass(0.1, 0.6);
+    std::uniform_real_distribution<double> decades(0.0, spread), mass(0.1, 0.6);
     std::vector<long> row(static_cast<std::size_t>(nx) * ny * nz, -1);
     long rows = 0;
     auto centre = [](int i, int n) { return n == 1 ? 0.0 : (i + 0.5) / n - 0.5; };
@@ -93,15 +101,64 @@ BOOST_AUTO_TEST_CASE(solves_like_the_simplicial_factorisation) {
     BOOST_TEST(difference_from_simplicial(viscosity_like(1, 1, 1, 0, 5), true) < 1e-9);
 }
 
+// Each step sets new values into the same pattern: a factor that kept anything of the last
+// values would show here. Coefficients over eight decades make the matrix's condition number up
+// to ~1e8/0.1; the backward error of a stable factorisation stays a small multiple of the unit
+// round-off whatever the conditioning: |A x - b| <= 1e-13 |A| |x| (measured ~1e-16), and the two
+// algorithms' solutions agree to the condition number times that (1e9 * 1e-16 = 1e-7, measured
+// ~1e-10).
+BOOST_AUTO_TEST_CASE(factorises_again_with_new_values_over_eight_decades) {
+    SupernodalLDLT ldlt;
+    ldlt.analyze(viscosity_like(90, 1, 90, 7, 11, 8.0));
+    for (unsigned seed : {11u, 12u, 13u}) {
+        const Matrix A = viscosity_like(90, 1, 90, 7, seed, 8.0);
+        BOOST_REQUIRE(ldlt.factorize(A, true));
+        Eigen::SimplicialLDLT<Matrix> simplicial(A);
+        const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 1.0);
+        Eigen::VectorXd x = b;
+        ldlt.solve(x.data());
+        const Eigen::VectorXd residual = A * x - b;
+        double norm = 0.0;  // |A|_inf
+        for (long r = 0; r < A.rows(); ++r) norm = std::max(norm, A.row(r).cwiseAbs().sum());
+        BOOST_TEST_INFO("values of seed " << seed);
+        BOOST_TEST(residual.lpNorm<Eigen::Infinity>() <= 1e-13 * norm * x.lpNorm<Eigen::Infinity>());
+        const Eigen::VectorXd expected = simplicial.solve(b);
+        BOOST_TEST((x - expected).lpNorm<Eigen::Infinity>() <= 1e-7 * expected.lpNorm<Eigen::Infinity>());
+    }
+}
+
+// With two threads (whatever OMP_NUM_THREADS says) the lanes run side by side; the bits are those
+// of the lanes one after the other.
 BOOST_AUTO_TEST_CASE(threads_do_not_change_the_bits) {
-    const Matrix A = viscosity_like(80, 1, 80, 11, 6);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(2);
+    const Matrix A = viscosity_like(80, 1, 80, 11, 6, 8.0);
     SupernodalLDLT one, two;
     one.analyze(A), two.analyze(A);
     BOOST_REQUIRE(one.factorize(A, false));
+    int team = 0;
+#pragma omp parallel
+#pragma omp single
+    team = omp_get_num_threads();
+    BOOST_REQUIRE(team == 2);
     BOOST_REQUIRE(two.factorize(A, true));
     Eigen::VectorXd x1 = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0), x2 = x1;
     one.solve(x1.data()), two.solve(x2.data());
     BOOST_TEST((x1.array() == x2.array()).all());
+    omp_set_num_threads(threads);
+}
+
+// A lane's Eigen products stay on its thread: with the default settings factorize() runs (on any
+// number of threads); asked through Eigen::setNbThreads for more, it refuses.
+BOOST_AUTO_TEST_CASE(eigen_opens_no_threads_inside_a_lane) {
+    const Matrix A = viscosity_like(60, 1, 60, 0, 9);
+    SupernodalLDLT ldlt;
+    ldlt.analyze(A);
+    BOOST_TEST(ldlt.factorize(A, false));
+    BOOST_TEST(ldlt.factorize(A, true));
+    Eigen::setNbThreads(2);
+    BOOST_CHECK_THROW(ldlt.factorize(A, false), InvariantError);
+    Eigen::setNbThreads(-1);  // back to OpenMP's setting
 }
 
 BOOST_AUTO_TEST_CASE(refuses_a_matrix_that_is_not_positive_definite) {
@@ -113,6 +170,37 @@ BOOST_AUTO_TEST_CASE(refuses_a_matrix_that_is_not_positive_definite) {
     BOOST_TEST(!ldlt.factorize(A, true));
     A.coeffRef(37, 37) = std::nan("");
     BOOST_TEST(!ldlt.factorize(A, false));
+}
+
+// A failing pivot in a wide panel (at least 16 columns: the dense Cholesky of its diagonal block)
+// and in a narrow one (column by column): a negative diagonal entry of A makes that row's pivot
+// negative (the updates only subtract from it), NaN makes it not finite. The row is chosen by the
+// width of its supernode; in the wide panel the failure names the panel's first row.
+BOOST_AUTO_TEST_CASE(refuses_in_a_wide_and_in_a_narrow_panel) {
+    const Matrix good = viscosity_like(100, 1, 100, 0, 10, 8.0);
+    SupernodalLDLT ldlt;
+    ldlt.analyze(good);
+    long wide = -1, narrow = -1;
+    for (long r = 0; r < good.rows(); ++r) {
+        if (wide == -1 && ldlt.supernode_width(r) >= 16) wide = r;
+        if (narrow == -1 && ldlt.supernode_width(r) <= 2) narrow = r;
+    }
+    BOOST_REQUIRE(wide != -1);
+    BOOST_REQUIRE(narrow != -1);
+    for (const double bad : {-1.0, std::nan("")}) {
+        Matrix A = good;
+        A.coeffRef(wide, wide) = bad;
+        BOOST_TEST_INFO("wide panel, diagonal " << bad);
+        BOOST_TEST(!ldlt.factorize(A, true));
+        BOOST_TEST(ldlt.supernode_width(ldlt.failed_row()) >= 16);
+        A = good;
+        A.coeffRef(narrow, narrow) = bad;
+        BOOST_TEST_INFO("narrow panel, diagonal " << bad);
+        BOOST_TEST(!ldlt.factorize(A, true));
+        BOOST_TEST(ldlt.failed_row() == narrow);
+    }
+    BOOST_TEST(ldlt.factorize(good, true));
+    BOOST_TEST(ldlt.failed_row() == -1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

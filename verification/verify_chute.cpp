@@ -1,4 +1,4 @@
-// The steady inclined chute (issue 4, item 3b, 2-D part): eq. (47) in the x-z plane with a
+// The steady inclined chute (the 2-D part of the Gray-Thornton reduction): eq. (47) in the x-z plane with a
 // sheared bulk velocity u(z) along x, solved with the coupling of the project (bulk transport of
 // phi with the face mass fluxes of a stream function, then the segregation sub-step along z,
 // eq. 52b) and compared with the exact solution of Gray & Thornton (2005).

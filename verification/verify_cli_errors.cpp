@@ -125,12 +125,12 @@ Check prints(const std::vector<std::string>& wanted) {
 std::vector<Case> cli_cases(const fs::path& out) {
     const std::string dir = "[output]\ndir = \"" + out.string() + "\"\n";
     const std::string sweep = "[scene]\nkind = \"closure-sweep\"\n" + dir;
-    // Segregation column (issue 4): the acceptance cases and the grid-wide conditions.
+    // Segregation column: the acceptance cases and the grid-wide conditions.
     const std::string column = "[scene]\nkind = \"segregation1d\"\n" + dir + "[grid]\ncells = 50\n[time]\nend = 0.75\n";
     const std::string profiles = "Phi = \"0.62 - 0.08*cos(_pi*z)^2\"\nT = \"0.2 + 0.8*z\"\n";
-    // Kinematic tumbler (issue 5): acceptance cases and the conditions between keys.
+    // Kinematic tumbler: acceptance cases and the conditions between keys.
     const std::string tumbler = "[scene]\nkind = \"tumbler-kinematic\"\n" + dir;
-    // The coupled drum (issue 11, check g).
+    // The coupled drum.
     const std::string coupled = "[scene]\nkind = \"tumbler\"\n" + dir + "[run]\nt_end = 1\nangle_from = 0\n";
     const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
     const std::string closures = "closures --Phi 0.59 --phi-hat 0.4 --T 1e-4";
@@ -232,7 +232,7 @@ std::vector<Case> cli_cases(const fs::path& out) {
         bad_arguments("direction, 2 numbers in --u", "direction " + shear + " --u '1 0'"),
         bad_arguments("direction, nan in --u", "direction " + shear + " --u '1 nan 0'"),
         bad_arguments("direction, missing --u", "direction " + shear),
-        // Good input: each scene writes its files, each command prints what the issues ask for.
+        // Good input: each scene writes its files, each command prints what its page documents.
         good("run, valid closure-sweep scene", "run SCENE", sweep + "[sweep]\nPhi_max = 0.6\npoints = 5\n",
              [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
                  t.count(l + ": files written", files_below(o), 1);

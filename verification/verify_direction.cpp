@@ -35,7 +35,7 @@ using Eigen::Matrix3d, Eigen::Vector3d;
 namespace {
 
 // Tolerances, each with its reason.
-// The bound for d_s in simple shear. The eigenvalues +-gamma/2, 0 have relative gap 1/2,
+// The bound for d_s in simple shear. The eigenvalues +-gamma/2, 0 have relative gap 1/2,
 // so the eigenvectors carry an error of a few eps/gap ~ 1e-15: 1e-12 leaves a wide margin.
 constexpr double kDirectionTol = 1e-12;
 // Relative error of a Frobenius norm or of an extreme eigenvalue of a 3x3 matrix of O(1) entries

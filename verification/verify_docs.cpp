@@ -12,15 +12,18 @@
 //     exists; every committed copy is shown by some page;
 //   - no teaching page (every page but docs/history.md) holds a date, a commit hash or a machine
 //     name, or refers to a file outside the repository; no source file refers outside either;
-//     every relative link and image leads to a file of the repository (not into build/);
+//     every relative link and image leads to a file of the repository (not into build/); every
+//     name a page shows in backticks (file, function, type, key, option, make target) exists
+//     somewhere in the tree (harness/doc_names.hpp);
 //   - every reference figure docs/figures/NAME.png is recorded in docs/figures/fingerprints.txt,
 //     and its fingerprint equals that of the data it would be drawn from now
 //     (harness/doc_figures.hpp), so a stale image fails until `make docs-figures` redraws it;
 //   - the checker itself (mutation self-checks): every expected line with a number, its last
 //     number moved by one unit of its last digit, must no longer agree with the line it matched;
 //     every generated block with one digit changed must differ from its copy; every recorded
-//     figure with one data digit changed must get another fingerprint; and the history and
-//     outside-reference detectors must flag samples of what they look for.
+//     figure with one data digit changed must get another fingerprint; and the history,
+//     outside-reference and name detectors must flag samples of what they look for (invented
+//     names among them) and pass samples of what exists.
 // Run: build/verification/verify_docs [--data DIR]   (make verify runs it after every other
 // verification program, whose results and data files some blocks and the figure check read;
 // about 20 s, most of it the tutorial's blocks). Two more modes, used by make targets:
@@ -30,6 +33,7 @@
 #include "harness/doc_blocks.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
+#include "harness/doc_names.hpp"
 #include "harness/program.hpp"
 
 #include <unistd.h>
@@ -71,12 +75,16 @@ fs::path fresh_table(const Repository& repo, const std::string& name) {
     return {};
 }
 
-/// History, outside references and links of one page.
-void check_hygiene(CheckTable& t, const Repository& repo, const std::string& page, const std::string& text) {
+/// History, outside references, links and names of one page (history.md may name what was).
+void check_hygiene(CheckTable& t, const Repository& repo, const TreeNames& tree, const std::string& page,
+                   const std::string& text) {
     const auto history = history_findings(text), outside = outside_references(text);
     if (page != "docs/history.md") {
         t.count(page + ": lines with a date, commit hash or machine", static_cast<long>(history.size()), 0);
         for (const auto& f : history) t.note(finding_line(f));
+        const auto names = unknown_names(text, page, tree);
+        t.count(page + ": names in backticks that exist nowhere in the tree", static_cast<long>(names.size()), 0);
+        for (const auto& f : names) t.note(finding_line(f));
     }
     t.count(page + ": references outside the repository", static_cast<long>(outside.size()), 0);
     for (const auto& f : outside) t.note(finding_line(f));
@@ -228,7 +236,7 @@ void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_d
 }
 
 /// The detectors flag what they look for and pass what they must not flag.
-void check_detectors(CheckTable& t) {
+void check_detectors(CheckTable& t, const TreeNames& tree) {
     const std::string history = "measured on 2 December 2026\nin May 2025\nmain af0974d\na freshly booted Intel Xeon\n"
                                 "on 2026-12-03\nload average 0.4\n";
     const std::string clean = "Gray & Thornton (2005)\nN = 1600, 12800 cells\n#1f77b4 colour\np_k = 1.046400526e-05\n";
@@ -236,6 +244,14 @@ void check_detectors(CheckTable& t) {
     t.count("detector self-check: clean sample lines flagged", static_cast<long>(history_findings(clean).size()), 0);
     const std::string outside = std::string("see ../") + "sha" + "red/paper/NOTES" + ".md\n(model" + ".md 3.4)\n";
     t.count("detector self-check: outside-reference sample lines flagged (of 2)", static_cast<long>(outside_references(outside).size()), 2);
+    // Invented names of each kind (split so that this file does not hold them whole), then real ones.
+    const std::string invented = std::string("`FlowSolver::nonexis") + "tent_stage()`\n`make nonexis" + "tent-target`\n" +
+                                 "`src/flow/nonexis" + "tent_file.cpp`\n`[flow] nonexis" + "tent_key = 1`\n`--nonexis" +
+                                 "tent-option`\n";
+    const std::string real = "`FlowSolver::step()`\n`make verify`\n`src/flow/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
+                             "`--data`\n`steps_dt_max`\n`time = 1.5 s`\n";
+    t.count("detector self-check: invented names flagged (of 5)", static_cast<long>(unknown_names(invented, "docs/x.md", tree).size()), 5);
+    t.count("detector self-check: existing names flagged", static_cast<long>(unknown_names(real, "docs/x.md", tree).size()), 0);
 }
 
 Repository find_repository(const char* argv0) {
@@ -311,12 +327,13 @@ int main(int argc, char** argv) {
     fs::create_directory_symlink(repo.build, scratch / "build");
     for (const char* dir : {"verification", "figures", "docs", "src"}) fs::create_directory_symlink(repo.root / dir, scratch / dir);
 
+    const TreeNames tree = tree_names(repo.root);
     BlockCounts n;
     std::vector<std::string> shown;
     long generated_mutants_equal = 0, figure_mutants_unchanged = 0;
     for (const std::string& page : repo.pages) {
         const std::string text = read_text(repo.root / page);
-        check_hygiene(t, repo, page, text);
+        check_hygiene(t, repo, tree, page, text);
         check_blocks(t, page, text, scratch, n);
         check_generated(t, repo, page, text, shown, generated_mutants_equal);
     }
@@ -326,7 +343,7 @@ int main(int argc, char** argv) {
                 std::count(shown.begin(), shown.end(), e.path().filename().string()) > 0 ? 1 : 0, 1);
     check_sources(t, repo);
     check_figures(t, repo, fs::path(options.data_dir), figure_mutants_unchanged);
-    check_detectors(t);
+    check_detectors(t, tree);
     t.note(std::to_string(repo.pages.size()) + " pages, " + std::to_string(n.commands) + " command blocks, " +
            std::to_string(n.outputs) + " output blocks, " + std::to_string(n.numeric_lines) + " expected lines with " +
            std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks");

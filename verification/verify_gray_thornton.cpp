@@ -1,4 +1,4 @@
-// The reduction to Gray-Thornton (Sect. 2.2, end; issue 4, item 3b, 1-D part): with constant
+// The reduction to Gray-Thornton (Sect. 2.2, end; the 1-D part): with constant
 // Phi and T, eq. (47) is the Gray-Thornton equation for psi = phi/Phi, the modified flux
 // (eq. 63) is its classic Godunov flux, and the solver converges to its exact solutions.
 //

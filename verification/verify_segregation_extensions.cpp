@@ -1,4 +1,4 @@
-// Beyond the paper (issue 4, item 4): the second-order bound-preserving scheme
+// Beyond the paper: the second-order bound-preserving scheme
 // modified-godunov-2 and diffusive remixing (Gray & Chugunov).
 //
 // What is checked, and against what independent expectation:

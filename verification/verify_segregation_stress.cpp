@@ -1,4 +1,4 @@
-// Stress test of the bound-preserving segregation schemes (issue 4, item 6): it tries to break
+// Stress test of the bound-preserving segregation schemes: it tries to break
 // 0 <= phi <= Phi, conservation and finiteness with hostile but valid input.
 //
 // 1-D columns (eq. 66 with optional remixing), modified-godunov and modified-godunov-2:
@@ -6,7 +6,7 @@
 //   values down to 1e-3; random T(z) >= 0, zero on random intervals and with jumps; random S and
 //   D; random initial phi in [0, Phi] (noise, blocks of empty and full cells, uniform); CFL up to
 //   1.0 (a quarter of the runs exactly 1); long runs (up to 40 segregation times).
-// 2-D grids in the x-z plane with a circular wall (the drum of issue 5): the coupled step of the
+// 2-D grids in the x-z plane with a circular wall (the kinematic drum of Sect. 4.2): the coupled step of the
 // project (bulk transport with the flow's face mass fluxes, then segregation with Phi frozen)
 // with coefficients a_x, a_z of random sign that change sign between cells, and either a
 // divergence-free rotation from a stream function (constant Phi) or random compressible mass

@@ -10,7 +10,7 @@
 //   - the waves are the ones the case names (table1_states.hpp: kTable1), the flux is the one
 //     Table 1 gives, and it equals eq. (63) (modified_godunov_flux);
 //   - for T_L = T_R the classifier agrees with Table 1 read literally (conditions on Phi, Phi~).
-// Issue item 4d: the same for T_L != T_R (half of the states with flux curves crossing inside
+// Beyond the table as printed: the same for T_L != T_R (half of the states with flux curves crossing inside
 // (0, min Phi)), for a_L, a_R < 0 (mirrored cases) and for a_L a_R <= 0 (grouped by sign class).
 // The random sweep (consistency, continuity, invariant region) is verify_table1_sweep, the
 // fine-grid oracle verify_table1_oracle.

@@ -1,4 +1,4 @@
-// Independent oracle for Table 1 (issue 3, items 4b and 4d): each Riemann problem is solved again
+// Independent oracle for Table 1 (Sect. 3, Table 1): each Riemann problem is solved again
 // on a fine grid with the jump replaced by smooth ramps of width w,
 //   Phi(z) = Phi_L + (Phi_R - Phi_L) s(z/w),  T(z) = T_L + (T_R - T_L) s(z/w),
 //   S(z) = S_L + (S_R - S_L) s(z/w),  a(z) = S(z) sqrt(T(z)),  s = C^1 smoothstep on [-1/2, 1/2],

@@ -1,4 +1,4 @@
-// Random sweep of the Riemann problem (52) (issue 3, items 4c and 4d): per coefficient family
+// Random sweep of the Riemann problem (52) (Sect. 3): per coefficient family
 // (T_L = T_R; T_L != T_R; a_L, a_R < 0; a_L a_R <= 0) 10^5 random state pairs,
 // with phi snapped to 0, Phi/2 or Phi on three sides in ten, and for every pair:
 //   - the exact solution has every property of verification/table1/exact_solution_checks.hpp,

@@ -48,7 +48,7 @@ namespace {
 
 // Stated bounds and tolerances, each with its reason.
 // a. Amounts: ~1e5 steps, each rounding every cell's update once (~1e-16 relative), random signs:
-//    the drift stays orders of magnitude below 1e-12 (the bound).
+//    the drift stays orders of magnitude below 1e-12.
 constexpr double kMassTol = 1e-12;
 // b. A uniform phi_hat = 1/2 is carried exactly (bulk_transport.hpp: the bulk step is the mass
 //    balance scaled by 1/2), so the flow sees exactly the packing of tumbler-flow: 1e-12 leaves

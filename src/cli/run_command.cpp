@@ -30,6 +30,7 @@ int run_main(const std::vector<std::string>& args) {
     usage += "  [material] g_law:\n" + describe_choices(kCompressibilityLaws);
     usage += "  [flow] time_stepping:\n" + describe_choices(kTimeSteppings);
     usage += "  [flow] viscosity:\n" + describe_choices(kViscositySolves);
+    usage += "  [flow] factorisation:\n" + describe_choices(kFactorisations);
     po::variables_map vm;
     if (!parse_options("run", usage, args, desc, positional, vm)) return 0;
     for (const auto& file : run_scene_file(scene, output_dir)) std::cout << "wrote " << file << '\n';

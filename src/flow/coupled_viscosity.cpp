@@ -7,18 +7,20 @@
 
 namespace granseg {
 
-CoupledViscosity::CoupledViscosity(const FlowMesh& mesh) : pattern_(cell_pattern<Matrix>(mesh)) {
+CoupledViscosity::CoupledViscosity(const FlowMesh& mesh, Factorisation factorisation)
+    : pattern_(cell_pattern<Matrix>(mesh)), factorisation_(factorisation) {
     set_up();
 }
 
 CoupledViscosity::CoupledViscosity(const CoupledViscosity& other)
-    : pattern_(other.pattern_) {
+    : pattern_(other.pattern_), factorisation_(other.factorisation_) {
     set_up();
 }
 
 CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
     if (this == &other) return *this;
     pattern_ = other.pattern_;
+    factorisation_ = other.factorisation_;
     set_up();
     return *this;
 }
@@ -26,7 +28,11 @@ CoupledViscosity& CoupledViscosity::operator=(const CoupledViscosity& other) {
 void CoupledViscosity::set_up() {
     rhs_.setZero(pattern_.matrix.rows(), 3);
     mass_.setZero(pattern_.matrix.rows());
-    ldlt_.analyze(pattern_.matrix);  // the fill-reducing ordering and the supernodes, once per pattern
+    // The fill-reducing ordering (and the supernodes), once per pattern.
+    if (factorisation_ == Factorisation::supernodal)
+        ldlt_.analyze(pattern_.matrix);
+    else
+        simplicial_.analyzePattern(pattern_.matrix);
 }
 
 void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
@@ -69,7 +75,14 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
                 for (int b = 0; b < 3; ++b) rhs_(pattern_.unknown[c], b) += w * walls[a][side][b];
         }
     }
-    if (!ldlt_.factorize(pattern_.matrix, mesh.parallel))
+    bool factored = false;
+    if (factorisation_ == Factorisation::supernodal) {
+        factored = ldlt_.factorize(pattern_.matrix, mesh.parallel);
+    } else {
+        simplicial_.factorize(pattern_.matrix);
+        factored = simplicial_.info() == Eigen::Success;
+    }
+    if (!factored)
         throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
     const Eigen::MatrixXd u = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells)
@@ -88,6 +101,10 @@ Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     const long n = static_cast<long>(columns.size());
 #pragma omp parallel for schedule(static, 1) if (parallel && n > 1)
     for (long q = 0; q < n; ++q) {
+        if (factorisation_ == Factorisation::simplicial) {
+            x.col(columns[q]) = simplicial_.solve(rhs_.col(columns[q]));
+            continue;
+        }
         x.col(columns[q]) = rhs_.col(columns[q]);
         ldlt_.solve(x.col(columns[q]).data());
     }

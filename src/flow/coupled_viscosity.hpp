@@ -19,7 +19,8 @@
 // 90 deg before it avalanched; coupled, it avalanches near the friction angle).
 // One sparse symmetric positive definite matrix for the three components: its pattern (inside
 // cells, interior faces) and fill-reducing ordering are set up once, the values and the sparse
-// LDL^T factor (flow/supernodal_ldlt.hpp) each step.
+// LDL^T factor each step: the project's supernodal one (flow/supernodal_ldlt.hpp) or Eigen's
+// SimplicialLDLT ([flow] factorisation; the cost of each: docs/flow_solver_choices.md).
 #pragma once
 
 #include "flow/cell_pattern.hpp"
@@ -29,6 +30,7 @@
 #include "flow/supernodal_ldlt.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <vector>
@@ -37,7 +39,7 @@ namespace granseg {
 
 class CoupledViscosity {
 public:
-    explicit CoupledViscosity(const FlowMesh& mesh);
+    explicit CoupledViscosity(const FlowMesh& mesh, Factorisation factorisation = Factorisation::supernodal);
     /// Copies the pattern; the factorisation (not copyable) is set up anew.
     CoupledViscosity(const CoupledViscosity& other);
     CoupledViscosity& operator=(const CoupledViscosity& other);
@@ -58,7 +60,9 @@ private:
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; its matrix takes each step's values
     Eigen::MatrixXd rhs_;
     Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)
-    SupernodalLDLT ldlt_;
+    Factorisation factorisation_;
+    SupernodalLDLT ldlt_;                      // factorisation_ == supernodal
+    Eigen::SimplicialLDLT<Matrix> simplicial_;  // factorisation_ == simplicial
 };
 
 }  // namespace granseg

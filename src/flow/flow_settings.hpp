@@ -35,6 +35,14 @@ inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
      "one axis after the other, tridiagonal line solves; creep too slow when dt eta/(Phi h^2) >> 1 (default with explicit)"},
 };
 
+/// Which sparse LDL^T factorises the coupled viscosity's matrix (docs/flow_solver_choices.md,
+/// "Why these choices"): the same solution up to round-off, at different cost.
+enum class Factorisation { supernodal, simplicial };
+inline constexpr Choice<Factorisation> kFactorisations[] = {
+    {Factorisation::supernodal, "supernodal", "the project's supernodal LDL^T, two subtrees on two threads (default)"},
+    {Factorisation::simplicial, "simplicial", "Eigen's SimplicialLDLT, row by row on one thread"},
+};
+
 /// How the semi-implicit step carries the mass balance: which Phi a face's mass flux M = Phi_d U takes
 /// (docs/flow_solver.md, S6; docs/flow_solver_choices.md, "The transport"). The coupled drum carries phi
 /// with the same scheme (tumbler/coupled_tumbler.hpp).
@@ -50,6 +58,7 @@ inline constexpr Choice<Transport> kTransports[] = {
 struct FlowSettings {
     TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 1)
     std::optional<ViscositySolve> viscosity;  // unset: coupled with semi-implicit, split with explicit
+    Factorisation factorisation = Factorisation::supernodal;  // of the coupled viscosity
     double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
     double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
     double Phi_vacuum = 1e-12;  // cells with Phi <= this are empty: u = 0, T = T_floor

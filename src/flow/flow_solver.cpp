@@ -113,6 +113,17 @@ void FlowSolver::set_phi_hat(std::vector<double> phi_hat) {
         if (!phi_hat.empty() && !(phi_hat[c] >= 0.0 && phi_hat[c] <= 1.0))
             throw InvariantError("flow: phi_hat = " + format_number(phi_hat[c]) + " outside [0, 1] at cell " +
                                  std::to_string(c));
+    // The state keeps Phi < Phi_rcp (header comment): a mixture change that moves Phi_rcp to or
+    // below a cell's Phi is the mixture's doing, not the flow's.
+    if (!state_.Phi.empty())
+        for (std::size_t c : mesh_.inside_cells) {
+            const double x = phi_hat.empty() ? settings_.phi_hat : phi_hat[c], rcp = material_.packing.Phi_rcp(x);
+            if (!(state_.Phi[c] < rcp))
+                throw InvariantError("flow: the mixture change to phi_hat = " + format_number(x) + " at x = " +
+                                     format_number(mesh_.position[0][c]) + ", z = " + format_number(mesh_.position[2][c]) +
+                                     " moves Phi_rcp to " + format_number(rcp, 8) + ", at or below the cell's Phi = " +
+                                     format_number(state_.Phi[c], 8) + " (t = " + format_number(t_) + " s)");
+        }
     phi_hat_ = std::move(phi_hat);
 }
 
@@ -177,7 +188,7 @@ void FlowSolver::viscosity(double dt) {
         implicit_viscosity(mesh_, settings_, walls_, dt, closures_.eta, lines_, line_rhs_, state_);
         return;
     }
-    if (!coupled_) coupled_.emplace(mesh_);
+    if (!coupled_) coupled_.emplace(mesh_, settings_.factorisation);
     coupled_->apply(mesh_, settings_, walls_, dt, closures_.eta, state_);
 }
 
@@ -204,9 +215,11 @@ void FlowSolver::check_invariants() const {
     const std::vector<double>& Phi = state_.Phi;
     const std::vector<double>& T = state_.T;
     const auto& u = state_.u;
+    // Phi_rcp of the step (closures_, from the phi_hat the step ran with).
+    const std::vector<double>& rcp = closures_.Phi_rcp;
     auto ok = [&](std::size_t c) {
-        return Phi[c] >= 0.0 && std::isfinite(Phi[c]) && T[c] >= 0.0 && std::isfinite(T[c]) && std::isfinite(u[0][c]) &&
-               std::isfinite(u[1][c]) && std::isfinite(u[2][c]);
+        return Phi[c] >= 0.0 && Phi[c] < rcp[c] && std::isfinite(Phi[c]) && T[c] >= 0.0 && std::isfinite(T[c]) &&
+               std::isfinite(u[0][c]) && std::isfinite(u[1][c]) && std::isfinite(u[2][c]);
     };
     long bad = 0;
     const std::size_t n = mesh_.inside_cells.size();
@@ -216,8 +229,8 @@ void FlowSolver::check_invariants() const {
     for (std::size_t c : mesh_.inside_cells)
         if (!ok(c))
             throw InvariantError("flow: invalid state at x = " + format_number(mesh_.position[0][c]) + ", z = " +
-                                 format_number(mesh_.position[2][c]) + ", t = " + format_number(t_) + " s: Phi = " +
-                                 format_number(Phi[c]) + ", T = " + format_number(T[c]) + ", u = (" +
+                                 format_number(mesh_.position[2][c]) + ", t = " + format_number(t_) + " s after a flow step: Phi = " +
+                                 format_number(Phi[c], 8) + " (Phi_rcp " + format_number(rcp[c], 8) + "), T = " + format_number(T[c]) + ", u = (" +
                                  format_number(u[0][c]) + ", " + format_number(u[1][c]) + ", " +
                                  format_number(u[2][c]) + ") (" + std::to_string(bad) + " cells)");
 }

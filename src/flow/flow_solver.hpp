@@ -138,7 +138,8 @@ public:
                    const std::vector<double>& T);
     /// Small-particle share phi_hat = phi/Phi per cell (same layout, values in [0, 1], copied):
     /// Phi_rcp and Phi_co then follow it cell by cell from the next step on. An empty vector
-    /// returns to the uniform settings.phi_hat.
+    /// returns to the uniform settings.phi_hat. InvariantError, naming the mixture change, if the
+    /// new Phi_rcp of a cell is at or below its Phi.
     void set_phi_hat(std::vector<double> phi_hat);
     /// Tangential velocity of the domain-boundary wall on `side` (0 lower, 1 upper) of `axis`.
     void set_wall_velocity(int axis, int side, const Vec3& U) { walls_[axis][side] = U; }

@@ -5,8 +5,13 @@
 //   inputs      p, T, Phi, Phi_rcp, Phi_co per cell; per face the coupling K_f; per cell the
 //               explicit mass change r_c; dp of the last step (the warm start)
 //   outputs     dp per inside cell; the Newton and Krylov counts, the final residual
-//   invariants  Phi(p + dp) < Phi_rcp in every cell (Newton approaches the root from below); a
-//               bed at rest (r = 0 to round-off) keeps dp = 0
+//   invariants  Phi(p + dp) < Phi_rcp in every cell (Newton approaches the root from below);
+//               r = 0 from a guess of 0 takes no Newton step and keeps dp = 0 exactly; a balanced
+//               bed, whose r is the rounding where gravity and the pressure gradient cancel, takes
+//               one and moves by round-off (at the defaults, verify_flow_rest's balanced box by at
+//               most 1024 units of 2^-52 in Phi over 2 s); max |F| stops at `accuracy` max |r|
+//               over the whole domain, so two runs that differ by rounding (the slab of
+//               verify_flow_rotation and its 2-D run) differ by what that tolerance admits
 //
 // Find the pressure increments dp per inside cell with
 //     F_c(dp) = Phi(p_c + dp_c; T_c) - Phi_c - r_c + sum_faces K_f (dp_c - dp_nb) = 0,

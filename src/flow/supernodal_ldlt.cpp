@@ -1,7 +1,10 @@
 #include "flow/supernodal_ldlt.hpp"
 
+#include "core/error.hpp"
+
 #include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,6 +93,7 @@ void SupernodalLDLT::analyze(const Matrix& A) {
     order_.resize(n);
     for (long k = 0; k < n; ++k) order_[k] = minimum_degree.indices()[post[k]];
     for (long k = 0; k < n; ++k) new_of_old[order_[k]] = k;
+    new_of_old_ = new_of_old;
     const std::vector<std::vector<long>> below = lower_neighbours(A, new_of_old);
     const std::vector<long> parent = elimination_tree(below);
 
@@ -193,6 +197,8 @@ std::vector<double> SupernodalLDLT::update_work() const {
     return work;
 }
 
+long SupernodalLDLT::supernode_width(long r) const { return width(super_of_[new_of_old_[r]]); }
+
 long SupernodalLDLT::waits_for(long d, long position) const {
     return position == height(d) ? -1 : super_of_[row_[row_start_[d] + position]];
 }
@@ -254,13 +260,23 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
     // columns (the list link_[s]), then factors its panel. The two lanes' subtrees share no
     // supernode and no list: what waits for a top supernode is linked after both.
     std::array<char, 2> ok{1, 1};
-#pragma omp parallel for schedule(static, 1) if (parallel)
+    failed_row_ = -1;
+    bool eigen_alone = true;
+#pragma omp parallel for schedule(static, 1) if (parallel) reduction(&& : eigen_alone)
     for (int l = 0; l < 2; ++l) {
+        // Eigen's dense products open their own OpenMP team when the caller's is not active (a
+        // sequential run of the lanes) and nbThreads() > 1; a lane's thread keeps them to itself
+        // (this thread's setting only: the lanes' bits must not depend on the threads).
+        omp_set_num_threads(1);
+        eigen_alone = eigen_alone && Eigen::nbThreads() == 1;
         Lane& lane = lanes_[l];
         lane.pending.clear();
         for (const auto& [begin, end] : lane.subtrees)
             for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
     }
+    if (!eigen_alone)
+        throw InvariantError("supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "
+                             "own inside a factorisation lane");
     if (!ok[0] || !ok[1]) return false;
     for (Lane& lane : lanes_)
         for (long d : lane.pending) {
@@ -354,7 +370,10 @@ bool SupernodalLDLT::factor_panel(long s) {
         Eigen::Map<Eigen::MatrixXd> panel(P, h, w);
         Eigen::Ref<Eigen::MatrixXd> top(panel.topRows(w));
         Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(top);
-        if (cholesky.info() != Eigen::Success || !top.diagonal().allFinite()) return false;
+        if (cholesky.info() != Eigen::Success || !top.diagonal().allFinite()) {
+            failed_row_ = order_[first_[s]];
+            return false;
+        }
         const Eigen::VectorXd c = top.diagonal();
         if (h > w) {
             Eigen::Ref<Eigen::MatrixXd> below(panel.bottomRows(h - w));
@@ -370,7 +389,10 @@ bool SupernodalLDLT::factor_panel(long s) {
     for (long k = 0; k < w; ++k) {
         double* column = P + k * h;
         const double d = column[k];
-        if (!(d > 0.0 && std::isfinite(d))) return false;
+        if (!(d > 0.0 && std::isfinite(d))) {
+            failed_row_ = order_[first_[s] + k];
+            return false;
+        }
         for (long j = k + 1; j < w; ++j) {  // the panel's later columns: P(i, j) -= L(i, k) d L(j, k)
             const double t = column[j] / d;
             if (t == 0.0) continue;

@@ -40,8 +40,16 @@ public:
     void analyze(const Matrix& A);
     /// L and D for the values of A (same pattern as analyze()); two subtrees of the elimination
     /// tree on two OpenMP threads if `parallel` (the same arithmetic either way). False, and no
-    /// usable factor, if a pivot is not positive and finite.
+    /// usable factor, if a pivot is not positive and finite (failed_row() then names its row).
+    /// Eigen's dense products inside a lane run on the lane's thread alone: InvariantError if
+    /// Eigen::setNbThreads() asked for more.
     bool factorize(const Matrix& A, bool parallel);
+    /// After a failed factorize(): the row of A whose pivot failed (a wide panel, factored by a
+    /// dense Cholesky, names its first row); -1 after a success.
+    long failed_row() const { return failed_row_; }
+    /// How many columns the supernode holding row r of A has (the panel's width: wide panels
+    /// factor their diagonal block by a dense Cholesky, narrow ones column by column).
+    long supernode_width(long r) const;
     /// x = A^-1 b in place (b of A's row count).
     void solve(double* x) const;
 
@@ -78,10 +86,11 @@ private:
     /// Subtracts supernode d's update of supernode s (from d's row cursor_[d] on) from s's panel.
     void update(long d, long s, Lane& lane);
     /// The dense LDL^T of supernode s's panel (its diagonal block and the rows below); false if a
-    /// pivot fails.
+    /// pivot fails, with failed_row_ set.
     bool factor_panel(long s);
 
     std::vector<long> order_;        // permuted row k is row order_[k] of A
+    std::vector<long> new_of_old_;   // row of A -> permuted row
     std::vector<long> first_;        // first column of each supernode (one past the last at the end)
     std::vector<long> super_of_;     // column -> supernode
     std::vector<long> row_start_;    // per supernode, into row_
@@ -96,6 +105,7 @@ private:
     std::array<Lane, 2> lanes_;
     std::vector<long> next_, link_;  // linked lists of supernodes waiting to update a later one
     std::vector<long> cursor_;       // per supernode, the position of its next row to update with
+    long failed_row_ = -1;           // row of A of the last failed pivot
 };
 
 }  // namespace granseg

@@ -20,6 +20,9 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.viscosity = parse_choice(kViscositySolves, scene.choice(s, "viscosity", choice_names(kViscositySolves),
                                                               choice_name(kViscositySolves, viscosity_solve(f))),
                                "viscosity");
+    f.factorisation = parse_choice(kFactorisations, scene.choice(s, "factorisation", choice_names(kFactorisations),
+                                                                 choice_name(kFactorisations, f.factorisation)),
+                                   "factorisation");
     f.cfl = scene.number(s, "cfl", Range::left_open(0, 1), f.cfl);
     f.T_floor = scene.number(s, "T_floor", Range::open(0, 1e-2), f.T_floor);
     f.Phi_vacuum = scene.number(s, "Phi_vacuum", Range::open(0, 1e-3), f.Phi_vacuum);

@@ -16,7 +16,7 @@
 // evaluated in the same order as the flow solver's mass balance (the sum over the axes first,
 // then one subtraction), so that for a uniform phi_hat = c every operation is the mass balance's
 // scaled by c: phi_hat stays c to round-off (exactly for c = 1/2, a power of two), and the
-// segregation part alone decides whether a mixture separates (issue 11, check b);
+// segregation part alone decides whether a mixture separates (verify_tumbler, S = 0);
 // so in every inside cell phi_new = phi_hat_i (Phi_old - dt sum_out |M|/h) + dt sum_in |M| phi_hat_nb/h
 // and phi_new/Phi_new is a convex combination of old phi_hat values whenever
 // dt sum_out |M|/h <= Phi_old (bulk_time_step). Open domain boundaries (a chute's inflow and

@@ -1,6 +1,6 @@
 // The time loop of a coupled drum run, shared by the scene kind "tumbler" and verify_tumbler, and
 // the files it writes (docs/scenes.md). The flow is stepped exactly as tumbler-flow steps it (its
-// own dt, up to t_end), so with S = 0 the two runs take the same steps (issue 11, check b). Every
+// own dt, up to t_end), so with S = 0 the two runs take the same steps (verify_tumbler). Every
 // kDrumHistoryInterval the segregation is brought up to date and a history row is recorded; the
 // invariants are checked there (InvariantError, exit 3):
 //   - the amount of each phase, sum of phi and sum of Phi - phi over the drum, stays within

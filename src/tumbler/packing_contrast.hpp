@@ -1,4 +1,4 @@
-// The claim of Fig. 7d as a number (issue 11, check e): in the resting bed, at equal depth below
+// The claim of Fig. 7d as a number (verify_tumbler): in the resting bed, at equal depth below
 // the free surface, how much denser the mixed material packs than nearly pure material.
 //
 // With packing feedback Phi_rcp(phi_hat) and Phi_co(phi_hat) peak near phi_hat = 0.4 (assumptions
@@ -24,7 +24,7 @@ struct PackingContrastOptions {
     double bed_level = 0.3;       // a bed cell has Phi > bed_level
     double v_flow = 0.0;          // m/s, at rest: speed relative to the drum <= v_flow
     double bin = 0.005;           // m, width of a depth bin
-    double mixed_lo = 0.3, mixed_hi = 0.7, pure = 0.1;  // phi_hat classes (issue 11, check e)
+    double mixed_lo = 0.3, mixed_hi = 0.7, pure = 0.1;  // phi_hat classes (docs/assumptions.md)
 };
 
 struct PackingContrast {

@@ -1,4 +1,4 @@
-// The drum's dynamic angle of repose against resolution, in both time-stepping modes (issue 12):
+// The drum's dynamic angle of repose against resolution, in both time-stepping modes (docs/sect4.2_tumbler.md):
 // the tumbler-flow drum of verification/scenes/tumbler_flow.toml (25 s, angle averaged from 10 s)
 // at kRuns' cells per diameter, modes and dt_max, one after another on OMP_NUM_THREADS threads
 // (default 1). Per run: steps, wall time, the angle's mean and standard deviation over
@@ -51,7 +51,7 @@ struct Run {
     const char* mode;   // [flow] time_stepping
     double dt_max;      // s, [flow] dt_max (1e-3 is the default; binds only the semi-implicit step)
 };
-// Explicit up to 100 cells (the resolution of the issue's target); semi-implicit up to 100 at the
+// Explicit up to 100 cells (the paper's resolution); semi-implicit up to 100 at the
 // default dt_max, at 32 cells with a tenth of it, and at 50 and 100 cells from 0.25 to 4 ms: what a
 // longer (cheaper) step costs in angle and layer thickness.
 constexpr Run kRuns[] = {

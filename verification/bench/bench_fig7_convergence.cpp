@@ -1,4 +1,4 @@
-// Solution verification of the paper's drum (Fig. 7, verification/scenes/tumbler.toml; issue 25):
+// Solution verification of the paper's drum (Fig. 7, verification/scenes/tumbler.toml):
 // how much of each Fig. 7 quantity is the model and how much the grid and the time step.
 //
 //   1. runs (harness/fig7_study.hpp): the coupled drum with the default time stepping at each

@@ -1,4 +1,4 @@
-// Work against error of the flow solver's two time-stepping modes (issue 12, Sect. 3): for each
+// Work against error of the flow solver's two time-stepping modes (docs/flow_solver.md Sect. 3): for each
 // mode and resolution, the error against an independent reference and the cost of the solve: the
 // CPU time (CLOCK_PROCESS_CPUTIME_ID) and the wall time (steady_clock) of the solver's time loop
 // only, one thread, medians of kRepeats runs (the set-up, e.g. the manufactured sources, is not

@@ -1,4 +1,4 @@
-// Work-precision benchmark of the segregation schemes (issue 4, item 5): L1 error against CPU
+// Work-precision benchmark of the segregation schemes (Sect. 4.1): L1 error against CPU
 // time for every scheme, N = 50 .. 12800, on
 //   two-shock  the homogeneous Gray-Thornton batch (Phi = 0.6, q = 1, psi0 = 0.4, t = 0.6), exact;
 //   fig6       the Fig. 6 column (docs/assumptions.md G4, t = 0.75) against a much finer run,

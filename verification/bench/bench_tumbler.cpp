@@ -5,7 +5,7 @@
 // DIR/tumbler_flow_explicit.toml so that both run the same drum) and the whole model (tumbler,
 // verification/scenes/tumbler.toml), alternately kRuns times each, so all see the same load.
 // Reports the median wall times; for both flow modes steps, angle of repose and flowing-layer
-// thickness (issue 12) and their wall-time ratio; the ratio coupled / flow (issue 11: the coupling
+// thickness and their wall-time ratio; the ratio coupled / flow (the coupling
 // may cost at most a fifth of the flow, ratio <= 1.2), the cost of the coupling per cell and flow
 // step from the coupled run's own timers, and then, once, the coupled drum without packing feedback
 // (tumbler_no_feedback.toml) and the kinematic drum (figures/tumbler_kinematic.toml) to check:
@@ -49,7 +49,7 @@ constexpr const char* kCoupledScene = "verification/scenes/tumbler.toml";
 constexpr const char* kNoFeedbackScene = "verification/scenes/tumbler_no_feedback.toml";
 constexpr const char* kKinematicScene = "figures/tumbler_kinematic.toml";
 
-// Issue 11: the segregation part may cost at most a fifth of the flow's.
+// The segregation part may cost at most a fifth of the flow's (docs/sect4.2_tumbler.md).
 constexpr double kRatio = 1.2;
 // d. The pattern after 25 s, stated before the first full-resolution run (docs/sect4.2_tumbler.md,
 // "Results"). The flow is the same as verify_tumbler's up to resolution; at 100 cells per diameter

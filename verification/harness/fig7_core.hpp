@@ -1,4 +1,4 @@
-// The paper's statements about Fig. 7 as checks on the finest run of the study (issue 25 item 4),
+// The paper's statements about Fig. 7 as checks on the finest run of the study,
 // each bound widened by the quantity's uncertainty (grid GCI plus dt GCI), and the core: how much
 // of its material a passive tracer says stays there, and which mechanism moves phi_hat in it.
 //

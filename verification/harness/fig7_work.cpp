@@ -21,7 +21,7 @@ std::string run_text(const Fig7Result& r) {
 }  // namespace
 
 // The tolerances: a figure is read to about 0.5 deg of slope and 0.02 on the 0..1 colour scale of
-// phi_hat (the criterion: differences a reader of Fig. 7 cannot see); a quick look needs the
+// phi_hat (differences a reader of Fig. 7 cannot see); a quick look needs the
 // pattern's sense and the slope within the 2.3 deg that separated the two time-stepping modes at
 // 100 cells; a paper quotes three digits (23.x deg, 0.8x), so a fifth of the figure's tolerances.
 const std::vector<Fig7Use>& fig7_uses() {

@@ -1,4 +1,4 @@
-// Work against error for the paper's drum (bench_fig7_convergence, issue 25 item 3): each run's
+// Work against error for the paper's drum (bench_fig7_convergence): each run's
 // wall time against its distance from the best estimate of the h -> 0 value (Fig7Analysis::
 // reference), per time stepping, resolution and dt_max, and which run reaches a tolerance soonest.
 #pragma once

@@ -1,5 +1,5 @@
 // Runs a 1-D segregation column for the verification programs and the benchmark, and records
-// what every run must show (issue 4, d): the amount of small particles (sum of phi, summed here
+// what every run must show: the amount of small particles (sum of phi, summed here
 // in long double, independently of the library's own monitor), the extremes of phi against its
 // bounds over all steps, non-finite values, and the cost (steps, cell updates, CPU time).
 #pragma once

@@ -20,7 +20,7 @@
 
 namespace granseg::verify {
 
-/// The coefficient families of issue 3, item 4: a = S sqrt(T) on each side.
+/// The coefficient families of the Table 1 checks: a = S sqrt(T) on each side.
 enum class Family { equal_T, unequal_T, negative, mixed };
 constexpr Family kFamilies[] = {Family::equal_T, Family::unequal_T, Family::negative, Family::mixed};
 
