@@ -21,6 +21,11 @@
 //    T at its floor (the pressure ~1e-12 Pa/rho: the velocity stays uniform): after a quarter of
 //    the period along x the exact Phi is the initial one shifted by (1, 0.5) m/s times the time.
 //    Observed order in L1 between 32 and 64 cells, each transport.
+// C. The bounds under stress: random compressible steps (random Phi from 1e-3 to 0.6, phi_hat of
+//    0, 1 or random in jumps, random face mass fluxes scaled so that no cell loses more than 0.9 of
+//    its Phi, as the flow's outflow bound guarantees) on a 24 x 24 box with walls. The FCT step must
+//    keep phi_hat in [0, 1] and the amount of phi to round-off in every step; the same high-order
+//    flux without the limiter must leave [0, 1] in some steps (so the check can fail).
 // Writes transport_orders.dat.
 //
 // Run: build/verification/verify_transport [--data DIR]   (a few seconds)
@@ -37,6 +42,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -184,6 +190,84 @@ double periodic_box(const Material& m, int n, Transport transport) {
     return error / (L * L);
 }
 
+/// Part C: what random compressible steps do to phi_hat, with the FCT step and with its unlimited
+/// high-order flux.
+struct StressResult {
+    long steps = 0, unlimited_outside = 0;  // steps; steps whose unlimited update left [0, 1]
+    double worst_excess = 0.0, worst_amount = 0.0;  // FCT: largest excursion of phi_hat beyond [0, 1]; |change of sum phi|/sum
+};
+StressResult stress(long steps) {
+    const int n = 24;
+    const Grid grid = Grid::plane_xz(n, n, 0.0, 0.0, 1.0, 1.0);
+    std::mt19937 rng(20261204);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    MusclHancock high_order(grid, Limiter::mc);
+    FctBulkTransport fct(grid, Limiter::mc);
+    StressResult r;
+    const double dt = 1.0, h = grid.h[0];
+    for (long s = 0; s < steps; ++s, ++r.steps) {
+        std::vector<double> Phi(grid.cells()), phi(grid.cells());
+        for (std::size_t c = 0; c < grid.cells(); ++c) {
+            Phi[c] = std::exp(std::log(1e-3) + uniform(rng) * std::log(600.0));  // 1e-3 .. 0.6, log-uniform
+            const double pick = uniform(rng);
+            phi[c] = (pick < 0.3 ? 0.0 : pick < 0.6 ? 1.0 : uniform(rng)) * Phi[c];
+        }
+        FaceFields M;
+        std::vector<double> out(grid.cells(), 0.0);
+        for (int a : {0, 2}) {
+            M[a].assign(grid.faces(a), 0.0);
+            for_each_face(grid, a, [&](const FaceCells& f) {
+                if (!is_open_face(grid, f)) return;
+                M[a][f.face] = (2.0 * uniform(rng) - 1.0) * std::max(Phi[f.lower], Phi[f.upper]);
+                out[M[a][f.face] > 0.0 ? f.lower : f.upper] += std::fabs(M[a][f.face]) * dt / h;
+            });
+        }
+        for (int a : {0, 2})  // no cell loses more than 0.9 of its Phi (the flow's outflow bound)
+            for_each_face(grid, a, [&](const FaceCells& f) {
+                double& m = M[a][f.face];
+                if (m == 0.0) return;
+                const std::size_t from = m > 0.0 ? f.lower : f.upper;
+                m *= std::min(1.0, 0.9 * Phi[from] / out[from]);
+            });
+        std::vector<double> Phi_new = Phi;
+        apply_mass_fluxes(grid, M, dt, Phi_new);
+        // The unlimited high-order update: phi - dt div(M phi_hat_f), phi_hat_f the MUSCL-Hancock value.
+        std::vector<double> hat(grid.cells());
+        for (std::size_t c = 0; c < grid.cells(); ++c) hat[c] = composition(phi[c], Phi[c]);
+        FaceFields velocity, G;
+        for (int a : {0, 2}) {
+            velocity[a].assign(grid.faces(a), 0.0);
+            for_each_face(grid, a, [&](const FaceCells& f) {
+                const double m = M[a][f.face];
+                if (m != 0.0) velocity[a][f.face] = m / Phi[m > 0.0 ? f.lower : f.upper];
+            });
+        }
+        high_order.face_values(hat, refs(velocity), dt, MusclHancock::Form::advective);
+        for (int a : {0, 2}) {
+            G[a].assign(grid.faces(a), 0.0);
+            for_each_face(grid, a, [&](const FaceCells& f) {
+                const double m = M[a][f.face];
+                if (m != 0.0) G[a][f.face] = m * (m > 0.0 ? high_order.from_lower()[a][f.face] : high_order.from_upper()[a][f.face]);
+            });
+        }
+        std::vector<double> unlimited = phi;
+        apply_mass_fluxes(grid, G, dt, unlimited);
+        bool outside = false;
+        for (std::size_t c = 0; c < grid.cells(); ++c)
+            outside |= unlimited[c] < -kBoundTol * Phi_new[c] || unlimited[c] > (1.0 + kBoundTol) * Phi_new[c];
+        r.unlimited_outside += outside;
+        long double before = 0, after = 0;
+        for (double v : phi) before += v;
+        fct.step(Phi, Phi_new, refs(M), {}, dt, phi);
+        for (std::size_t c = 0; c < grid.cells(); ++c) {
+            after += phi[c];
+            r.worst_excess = std::max({r.worst_excess, -phi[c] / Phi_new[c], phi[c] / Phi_new[c] - 1.0});
+        }
+        r.worst_amount = std::max(r.worst_amount, static_cast<double>(std::fabs(after - before) / before));
+    }
+    return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -237,6 +321,11 @@ int main(int argc, char** argv) {
         table.note(tag + "order 16 -> 32: " + verify::format(std::log2(errors[0] / errors[1])));
         table.at_least(tag + "flow solver: order of Phi 32 -> 64", std::log2(errors[1] / errors[2]), kSmoothShare * p);
     }
+    const StressResult st = stress(200);
+    table.note("[C] " + std::to_string(st.steps) + " random compressible steps on 24 x 24 cells (outflow <= 0.9 Phi per step)");
+    table.at_most("[C, FCT] largest excursion of phi_hat beyond [0, 1]", st.worst_excess, kBoundTol);
+    table.at_most("[C, FCT] largest relative change of the amount of phi in a step", st.worst_amount, kMassTol);
+    table.at_least("[C] steps whose unlimited high-order update left [0, 1]", static_cast<double>(st.unlimited_outside), 1.0);
     verify::write_data(program.options, "transport_orders.dat", data);
     return table.finish();
 }
