@@ -90,9 +90,8 @@ std::map<std::string, double> last_row_of(const std::string& text) {
         if (!line.empty() && line[0] != '#') last = line;
     std::istringstream names(header.substr(std::min<std::size_t>(1, header.size()))), values(last);
     std::map<std::string, double> row;
-    std::string name;
-    double v;
-    while (names >> name && values >> v) row[name] = v;
+    std::string name, value;
+    while (names >> name && values >> value) row[name] = std::strtod(value.c_str(), nullptr);  // reads nan and inf too
     return row;
 }
 

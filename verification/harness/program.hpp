@@ -24,7 +24,7 @@ ProgramOptions parse_program_options(int argc, char** argv);
 std::vector<std::vector<double>> read_rows(const std::string& path);
 
 /// The last row of a table (DataTable text: "# name ..." first, then comments and rows) as
-/// column name -> value; last_row reads it from the file at `path`.
+/// column name -> value (nan and inf included); last_row reads it from the file at `path`.
 std::map<std::string, double> last_row_of(const std::string& text);
 std::map<std::string, double> last_row(const std::string& path);
 
