@@ -61,10 +61,10 @@ constexpr double kRestMomentum = kRestProfileTol * kRestFill / 0.1;
 //    mass change whose iterates are not mirror images: at the default 1e-2 the two senses differ
 //    by ~1e-10 after one step, and the avalanches amplify that (printed as a note). With the
 //    pressure solved to 1e-12 only the sums' rounding is left, ~1e-16 per step; 1e-12 bounds its
-//    growth over the run's ~1000 steps, even compounded (1000 x 1e-16 x 1e4 of amplification),
-//    and lies eight orders below the difference of the default solve after the run (~1e-4).
+//    growth over the run's ~750 steps, even compounded (750 x 1e-16 x 1e4 of amplification),
+//    and lies eight orders below the difference of the default solve after the run (1e-4 to 1e-3).
 constexpr double kMassTol = 1e-12;
-constexpr double kTriangleTime = 2.0, kTightPressure = 1e-12, kMirrorTol = 1e-12;
+constexpr double kTriangleTime = 1.5, kTightPressure = 1e-12, kMirrorTol = 1e-12;
 constexpr int kTriangleCells = 36;
 
 std::string drum_keys(int cells, const std::string& shape) {
