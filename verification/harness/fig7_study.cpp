@@ -3,7 +3,6 @@
 #include "core/error.hpp"
 #include "core/output.hpp"
 #include "core/scene_file.hpp"
-#include "flow/flow_settings.hpp"
 #include "harness/program.hpp"
 #include "harness/time_series.hpp"
 #include "scenes/scene_kind.hpp"
@@ -86,11 +85,8 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     r.insert_or_assign("frames", 0), r.insert_or_assign("vtk", false);
     toml::table& flow = section("flow");
     if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
-    else if (!o.transport.empty()) flow.insert_or_assign("transport", o.transport);
-    if (run.dt_factor != 1.0) {
-        const double dt_max = flow["dt_max"].value_or(FlowSettings{}.dt_max);
-        flow.insert_or_assign("dt_max", run.dt_factor * dt_max);
-    }
+    else flow.insert_or_assign("transport", run.transport);
+    flow.insert_or_assign("dt_max", run.dt_max);
     if (is_floor(run.kind)) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (is_tracer(run.kind)) {
         const double r_core = read_tumbler(SceneFile::load(kScene)).run.regions.r_core;
@@ -107,6 +103,13 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
 }
 
 std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
+
+/// A dt factor in a run's name: 0.5 -> "0.5", 0.25 -> "0.25".
+std::string fig7_factor(double f) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", f);
+    return s;
+}
 
 }  // namespace
 
@@ -133,18 +136,25 @@ double fig7_scene_number(const char* section, const char* key, double fallback) 
 
 std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
     std::vector<Fig7Run> runs;
-    for (int n : o.cells) runs.push_back({cell_name("default", n), Fig7Kind::grid, false, n, 1.0});
-    for (int n : o.explicit_cells) runs.push_back({cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0});
-    const int finest = o.cells.back();
+    const std::string& first = o.transports.front();
+    const auto add = [&](const std::string& name, Fig7Kind kind, bool explicit_steps, int n, double factor, const std::string& transport) {
+        runs.push_back({name, kind, explicit_steps, n, factor, transport, o.dt_max(n, factor)});
+    };
+    for (const std::string& t : o.transports)
+        for (int n : o.cells) add(cell_name(t.c_str(), n), Fig7Kind::grid, false, n, 1.0, t);
+    for (int n : o.explicit_cells) add(cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0, "");
+    const int coarsest = o.cells.front(), finest = o.cells.back();
     if (o.dt_study) {
-        const int n = o.dt_cells > 0 ? o.dt_cells : finest;
-        runs.push_back({cell_name("default", n) + "_dt0.5", Fig7Kind::dt, false, n, 0.5});
-        runs.push_back({cell_name("default", n) + "_dt2", Fig7Kind::dt, false, n, 2.0});
+        for (double f : o.dt_coarse) add(cell_name(first.c_str(), coarsest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, coarsest, f, first);
+        for (double f : o.dt_fine) add(cell_name(first.c_str(), finest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, finest, f, first);
     }
     if (o.core_study) {
-        for (int n : o.cells) runs.push_back({cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0});
-        runs.push_back({cell_name("floor", finest), Fig7Kind::floor, false, finest, 1.0});
-        runs.push_back({cell_name("tracer_floor", finest), Fig7Kind::tracer_floor, false, finest, 1.0});
+        for (int n : o.cells) add(cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0, first);
+        // At the second-finest grid: the floor's part is a difference of two runs at one grid, and
+        // the finest grid would double the study's cost.
+        const int n = o.cells[o.cells.size() - 2];
+        add(cell_name("floor", n), Fig7Kind::floor, false, n, 1.0, first);
+        add(cell_name("tracer_floor", n), Fig7Kind::tracer_floor, false, n, 1.0, first);
     }
     return runs;
 }
@@ -172,6 +182,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     const NamedTable summary = read_named(dir + "/summary.dat"), history = read_named(dir + "/history.dat");
     const std::vector<double>& s = summary.last();
     r.steps = summary.at(s, "steps");
+    r.dt_max_share = summary.at(s, "steps_dt_max") / r.steps;
     r.dt_mean = summary.at(s, "t_end") / r.steps;
     r.h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / run.cells;
     r.initial_mixture = summary.at(s, "initial_mixture"), r.packing_spread = summary.at(s, "packing_spread");

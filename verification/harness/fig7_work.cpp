@@ -12,9 +12,9 @@ namespace {
 constexpr int kAngle = 0, kIndex = 2;  // fig7_quantities()
 
 std::string run_text(const Fig7Result& r) {
-    std::string s = std::string(r.run.explicit_steps ? "explicit" : "default") + " time stepping, " +
+    std::string s = (r.run.explicit_steps ? std::string("explicit time stepping") : r.run.transport) + ", " +
                     std::to_string(r.run.cells) + " cells per diameter";
-    if (r.run.dt_factor != 1.0) s += ", dt_max x " + fig7_number(r.run.dt_factor);
+    s += ", dt_max " + fig7_number(1e3 * r.run.dt_max, 4) + " ms";
     return s;
 }
 
@@ -40,20 +40,20 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
         refs += std::string(q ? ", " : "") + quantities[q].name + " " + fig7_number(a.reference(q)) + " +- " +
                 fig7_number(a.reference_uncertainty(q), 2);
     table.comment("bench_fig7_convergence: wall time (s, " + std::to_string(o.threads) + " threads) and |value - reference| per "
-                  "grid and dt run, and (u_) the reference's uncertainty; reference (default series, extrapolated if monotone, else the finest run) +- its GCI: " + refs);
+                  "grid and dt run, and (u_) the reference's uncertainty; reference (the first transport's series, extrapolated if monotone inside the physical range, else the finest run) +- its uncertainty: " + refs);
     std::vector<const Fig7Result*> runs;
     for (const Fig7Result& r : a.results)
         if (r.run.kind == Fig7Kind::grid || r.run.kind == Fig7Kind::dt) runs.push_back(&r);
     std::ostringstream md;
-    md << "| time stepping | cells per diameter | dt_max | wall time (s) | angle error (deg) | index error | "
+    md << "| transport | cells per diameter | dt_max (ms) | wall time (s) | angle error (deg) | index error | "
           "layer error (mm) | core error |\n|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Result* r : runs) {
         std::vector<double> row{r->run.explicit_steps ? 1.0 : 0.0, static_cast<double>(r->run.cells), r->run.dt_factor, r->wall};
         for (int q = 0; q < kFig7Quantities; ++q) row.push_back(std::fabs(r->value[q] - a.reference(q)));
         for (int q = 0; q < kFig7Quantities; ++q) row.push_back(a.reference_uncertainty(q));
         table.row(row);
-        md << "| " << (r->run.explicit_steps ? "explicit" : "default") << " | " << r->run.cells << " | x "
-           << fig7_number(r->run.dt_factor) << " | " << fig7_number(r->wall, 3) << " | " << fig7_number(row[4 + kAngle], 2)
+        md << "| " << (r->run.explicit_steps ? "explicit" : r->run.transport) << " | " << r->run.cells << " | "
+           << fig7_number(1e3 * r->run.dt_max, 4) << " | " << fig7_number(r->wall, 3) << " | " << fig7_number(row[4 + kAngle], 2)
            << " | " << fig7_number(row[4 + kIndex], 2) << " | " << fig7_number(row[4 + 1], 2) << " | "
            << fig7_number(row[4 + 5], 2) << " |\n";
     }
