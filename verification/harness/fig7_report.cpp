@@ -79,6 +79,44 @@ std::string series_text(const Fig7Estimate& e, const Fig7Analysis& a) {
     return e.series + ", dt ~ h";
 }
 
+/// The verdict on a quantity from its reference series.
+std::string verdict(const Fig7Estimate& e) {
+    const GridConvergence& g = e.g;
+    switch (g.condition) {
+        case Convergence::monotone:
+            return g.outside_bounds ? "limit outside the physical range: not established"
+                                    : "converges (p = " + fig7_number(g.p, 3) + "), limit " + fig7_number(g.f0);
+        case Convergence::within_noise: return "grid differences within the sampling errors: no trend resolved";
+        case Convergence::two_grids: return "two grids: order assumed";
+        default: return convergence_name(g.condition) + ": range " + fig7_number(g.lo) + " – " + fig7_number(g.hi);
+    }
+}
+
+/// DIR/fig7_summary.md: per quantity the value at the paper's grid (100 cells per diameter, or the
+/// finest), the limit, the band of the finest run and the verdict (the full table:
+/// fig7_convergence.md).
+void write_fig7_summary(const Fig7Analysis& a, const Fig7Options& o) {
+    constexpr int kPaperCells = 100;
+    const auto grid = a.runs(Fig7Kind::grid, false, a.reference_series);
+    const auto paper = std::find_if(grid.begin(), grid.end(), [](const Fig7Result* r) { return r->run.cells == kPaperCells; });
+    const Fig7Result& shown = paper != grid.end() ? **paper : a.finest();
+    std::ostringstream md;
+    md << "| quantity | at " << shown.run.cells << " cells | limit | band of the " << a.finest().run.cells
+       << "-cell value | verdict |\n|---|---|---|---|---|\n";
+    for (int q = 0; q < kFig7Quantities; ++q) {
+        const Fig7Quantity& quantity = fig7_quantities()[q];
+        const Fig7Estimate& e = *a.find(q, a.reference_series);
+        const bool limit = e.g.condition == Convergence::monotone && !e.g.outside_bounds;
+        md << "| " << quantity.label << (std::string(quantity.unit) == "-" ? "" : " (" + std::string(quantity.unit) + ")") << " | "
+           << fig7_number(shown.value[q]) << " ± " << fig7_number(shown.sampling[q], 2) << " | " << (limit ? fig7_number(e.g.f0) : "–")
+           << " | " << fig7_number(a.band(q), 3) << " | " << verdict(e) << " |\n";
+    }
+    md << "\nWritten by `bench_fig7_convergence`: the " << a.reference_series << " transport, dt_max " << fig7_number(1e3 * o.dt_ref)
+       << " ms × 50/cells; ± after a value: its sampling error; band: the reference series' uncertainty plus the time-step "
+          "study's at the finest grid. Every series and number: `fig7_convergence.md`.\n";
+    write_file_atomically(o.data_dir + "/fig7_summary.md", md.str());
+}
+
 }  // namespace
 
 std::string fig7_number(double v, int digits) {
@@ -114,21 +152,11 @@ std::vector<const Fig7Result*> Fig7Analysis::dt_runs(int cells) const {
 
 const Fig7Result& Fig7Analysis::finest() const { return *runs(Fig7Kind::grid, false, reference_series).front(); }
 
-namespace {
-bool extrapolated(const Fig7Estimate& e) { return e.g.condition == Convergence::monotone && !e.g.outside_bounds; }
-}  // namespace
+const Fig7Result& Fig7Analysis::reference_run() const { return *dt_runs(finest().run.cells).front(); }
 
-double Fig7Analysis::reference(int q) const {
-    const Fig7Estimate* e = find(q, reference_series);
-    return extrapolated(*e) ? e->g.f0 : e->f[0];
-}
-
-double Fig7Analysis::reference_uncertainty(int q) const { return find(q, reference_series)->g.uncertainty; }
-
-std::string Fig7Analysis::reference_note(int q) const {
-    const Fig7Estimate* e = find(q, reference_series);
-    return extrapolated(*e) ? "the " + reference_series + " series' extrapolated value"
-                            : "the finest " + reference_series + " run (" + convergence_name(e->g.condition) + ": no extrapolation)";
+double Fig7Analysis::band(int q) const {
+    const Fig7Estimate* dt = find(q, "dt finest");
+    return find(q, reference_series)->g.uncertainty + (dt ? dt->g.uncertainty : 0.0);
 }
 
 Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o) {
@@ -213,6 +241,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
        << "order " << fig7_number(kFormalOrder) << " assumed, Fs = 3.\n";
     write_file_atomically(o.data_dir + "/fig7_convergence.dat", conv.str());
     write_file_atomically(o.data_dir + "/fig7_convergence.md", md.str());
+    write_fig7_summary(a, o);
 }
 
 }  // namespace granseg::verify

@@ -46,12 +46,12 @@ struct Fig7Analysis {
     std::vector<const Fig7Result*> dt_runs(int cells) const;
     /// The finest grid run of the reference transport.
     const Fig7Result& finest() const;
-    /// The best estimate of the h -> 0 value of `quantity` and its uncertainty: the default series'
-    /// extrapolation when monotone and inside the physical range, else the finest run; the
-    /// uncertainty of the finest run (reference_note says which).
-    double reference(int quantity) const;
-    double reference_uncertainty(int quantity) const;
-    std::string reference_note(int quantity) const;
+    /// The reference of the work-against-error table: the finest grid's run with the smallest dt
+    /// (the dt study's, or the grid run without one).
+    const Fig7Result& reference_run() const;
+    /// The band of the finest grid run's value of `quantity`: the reference series' uncertainty
+    /// plus the dt study's at the finest grid (where the study has one).
+    double band(int quantity) const;
 };
 
 /// The estimates of every quantity in every series the runs allow.

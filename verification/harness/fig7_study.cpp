@@ -2,11 +2,9 @@
 
 #include "core/error.hpp"
 #include "core/output.hpp"
-#include "core/scene_file.hpp"
 #include "harness/program.hpp"
 #include "harness/time_series.hpp"
 #include "scenes/scene_kind.hpp"
-#include "scenes/tumbler.hpp"
 #include "tumbler/drum.hpp"
 
 #include <omp.h>
@@ -72,6 +70,9 @@ std::string file_text(const std::string& path) {
 bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::tracer_floor; }
 bool is_floor(Fig7Kind k) { return k == Fig7Kind::floor || k == Fig7Kind::tracer_floor; }
 
+/// NAME_nCELLS, a run's name.
+std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
+
 /// The scene text of `run`: the paper's scene with the run's keys changed.
 std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     toml::table scene = toml::parse_file(kScene);
@@ -89,7 +90,11 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     flow.insert_or_assign("dt_max", run.dt_max);
     if (is_floor(run.kind)) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (is_tracer(run.kind)) {
-        const double r_core = read_tumbler(SceneFile::load(kScene)).run.regions.r_core;
+        // The tracer fills the drum's own core at that grid: r < d - layer, the layer measured by
+        // the reference transport's grid run of the same cells (run before the tracer runs).
+        const std::string grid_run = o.data_dir + "/fig7_convergence/" + cell_name(o.transports.front().c_str(), run.cells);
+        const NamedTable grid_summary = read_named(grid_run + "/summary.dat");
+        const double r_core = grid_summary.at(grid_summary.last(), "r_core_layer");
         char expression[96];
         std::snprintf(expression, sizeof expression, "sqrt(x^2 + z^2) < %.17g ? 1 : 0", r_core);
         section("segregation").insert_or_assign("S", 0.0);
@@ -102,7 +107,6 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     return text.str();
 }
 
-std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
 
 /// A dt factor in a run's name: 0.5 -> "0.5", 0.25 -> "0.25".
 std::string fig7_factor(double f) {
@@ -121,11 +125,11 @@ const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities() {
         {"angle", "dynamic angle of repose", "deg", true, "angle_mean_deg", "surface_angle_deg", 1.0, 0.0, 90.0},
         {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3, 0.0, kInf},
         {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0, 0.0, 1.0},
-        {"ring", "ring, small-particle share", "-", false, "ring", "ring", 1.0, 0.0, 1.0},
-        {"periphery", "periphery, small-particle share", "-", false, "periphery", "periphery", 1.0, 0.0, 1.0},
-        {"core", "core, small-particle share", "-", false, "core", "core", 1.0, 0.0, 1.0},
+        {"ring", "ring (d - layer <= r < d), small-particle share", "-", false, "ring_layer", "ring_layer", 1.0, 0.0, 1.0},
+        {"periphery", "periphery (r >= 0.8 R), small-particle share", "-", false, "periphery_layer", "periphery_layer", 1.0, 0.0, 1.0},
+        {"core", "core (r < d - layer), small-particle share", "-", false, "core_layer", "core_layer", 1.0, 0.0, 1.0},
         {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0, -1.0, 1.0},
-        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis", "axis", 1.0, 0.0, 1.0},
+        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis_layer", "axis_layer", 1.0, 0.0, 1.0},
     }};
     return q;
 }

@@ -16,7 +16,8 @@
 //   dt        the first transport at the coarsest grid with dt_max times each --dt-coarse factor,
 //             and at the finest with each --dt-fine factor (factors below 1: dt_max keeps binding)
 //   tracer    a passive tracer in the core (S = 0, packing feedback off, closures of the 0.5
-//             mixture via [coupling] mixture, phi_hat = 1 within r_core, 0 elsewhere) at each --cells
+//             mixture via [coupling] mixture, phi_hat = 1 within the drum's own core r_core_layer
+//             of the reference transport's grid run at that grid, 0 elsewhere) at each --cells
 //   floor     the full model and the tracer at the second-finest --cells with T_floor lowered to
 //             --T-floor-low
 #pragma once
