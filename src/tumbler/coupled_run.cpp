@@ -57,7 +57,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
                        "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
                        "substeps", "dt", "layer_thickness", "axis", "packing_contrast", "r_core_layer", "core_layer",
-                       "ring_layer", "periphery_layer", "axis_layer"});
+                       "ring_layer", "periphery_layer", "axis_layer", "tracer_core_layer"});
     history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
                     "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
@@ -67,7 +67,8 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "share within " + format_number(kAxisShare) + " D of the axis; packing_contrast: Fig. 7d "
                     "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
                     "layer's thickness (its mean over t >= angle_from once there, else the present one), cells weighted by "
-                    "their exact area inside each region");
+                    "their exact area inside each region; tracer_core_layer: the passive tracer's share tau/Phi of the core "
+                    "(NaN without a tracer)");
     PackingContrastOptions contrast_options;
     contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
     TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
@@ -75,6 +76,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
     const LayerRegions own_regions(grid, drum.surface_height(), drum.radius(), kAxisShare * drum.diameter);
     LayerRegionShares own;
+    double tracer_core = NAN;
     PatternMetrics metrics;
     PackingContrast contrast;
     int snapshot = 0, frame = 0;
@@ -102,11 +104,13 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
             metrics = pattern_metrics(grid, tumbler.phi(), flow.Phi(), options.regions, hat0);
             axis = disc_share(grid, tumbler.phi(), flow.Phi(), kAxisShare * drum.diameter, level);
             contrast = packing_contrast(tumbler, surface_angle, contrast_options);
-            own = own_regions.shares(tumbler.phi(), flow.Phi(), layer.samples() > 0 ? layer.mean() : thickness, level);
+            const double delta = layer.samples() > 0 ? layer.mean() : thickness;
+            own = own_regions.shares(tumbler.phi(), flow.Phi(), delta, level);
+            if (!tumbler.tracer().empty()) tracer_core = own_regions.shares(tumbler.tracer(), flow.Phi(), delta, level).core;
             history.row({flow.time(), static_cast<double>(flow.steps()), amount[0], amount[1], metrics.index, surface_angle,
                          metrics.ring, metrics.periphery, metrics.core, small_change, large_change, d.flowing_fraction,
                          d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt(), thickness, axis,
-                         contrast.contrast, own.r_core, own.core, own.ring, own.periphery, own.axis});
+                         contrast.contrast, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core});
         }
         if (options.run.vtk && due(next_snapshot)) {
             next_snapshot += options.run.snapshot_every;
@@ -140,9 +144,11 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
                                static_cast<double>(grid.inside_cells())};
     append_flow_work(flow, columns, values);
-    for (const char* c : {"layer_mean", "layer_std", "axis", "r_core_layer", "core_layer", "ring_layer", "periphery_layer", "axis_layer"})
+    for (const char* c : {"layer_mean", "layer_std", "axis", "r_core_layer", "core_layer", "ring_layer", "periphery_layer", "axis_layer",
+                          "tracer_core_layer"})
         columns.push_back(c);
-    for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis}) values.push_back(v);
+    for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core})
+        values.push_back(v);
     DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
                     " s; pattern metrics at t_end (regions r_core " + format_number(options.regions.r_core) + ", r_ring " +

@@ -66,8 +66,7 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
     } else {
         const Fig7Estimate* tracer = a.find(kCore, "tracer");
         const auto core_runs = a.runs(Fig7Kind::grid, false, a.reference_series);
-        const Fig7Result *K_run = a.runs(Fig7Kind::tracer, false).front(), *floor = only_run(a, Fig7Kind::floor),
-                         *K_floor = only_run(a, Fig7Kind::tracer_floor);
+        const Fig7Result *K_run = a.runs(Fig7Kind::tracer, false).front(), *floor = only_run(a, Fig7Kind::floor);
         const double K1 = K_run->value[kCore], U_K = tracer ? tracer->g.uncertainty : std::nan("");
         t.at_least("d. mainly untouched core: tracer's retained share - U", K1 - U_K, kMainly);
         // A part is established only where its series allows it: an extrapolation that is monotone
@@ -98,13 +97,13 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
         const double T_floor = fig7_scene_number("flow", "T_floor", FlowSettings{}.T_floor);
         const double g = fig7_scene_number("drum", "gravity", DrumSpec{}.gravity);
         const auto known = [&](bool ok, double v) { return ok ? fig7_number(v) : kNot; };
-        row("tracer (S = 0): share of the core's material at t_end that started there, finest grid", fig7_number(K1));
+        row("tracer (the full model's flow): share of the core's material at t_end that started there, finest grid", fig7_number(K1));
         row("the same, h -> 0 (" + (tracer ? convergence_name(tracer->g.condition) : std::string("one grid")) + ")",
             known(K_known, K_ext) + " +- " + fig7_number(U_K, 3));
         row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", known(K_known, K_ext - K1));
         row("material exchanged by the model's creep, 1 - K_ext", known(K_known, 1.0 - K_ext));
         row("T_floor " + fig7_number(o.T_floor_low) + " instead of the scene's at " + std::to_string(floor->run.cells) +
-                " cells: retained share (tracer)", fig7_number(K_floor->value[kCore]));
+                " cells: retained share (tracer)", fig7_number(floor->tracer));
         row("core share: discretisation part C(h1) - C_ext", known(C_known, discretisation));
         row("core share: the floor's part C - C(lower T_floor) at " + std::to_string(floor->run.cells) + " cells",
             known(floor_known, floor_part));
@@ -114,11 +113,11 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
         row("moves phi_hat in the core most", largest_text);
         t.note("d. core: C(h1) = " + fig7_number(C1) + " (initial " + fig7_number(m0) + "); tracer retained share " + fig7_number(K1) +
                " (h -> 0: " + known(K_known, K_ext) + " +- " + fig7_number(U_K, 3) + "), at the lower floor " +
-               fig7_number(K_floor->value[kCore]));
+               fig7_number(floor->tracer));
         t.note("d. core change split: discretisation " + known(C_known, discretisation) + ", floor " + known(floor_known, floor_part) +
                ", the rest " + known(C_known, model) + ": most from " + largest_text);
     }
-    md << "\nWritten by `bench_fig7_convergence` (its check table states a-d with their bounds).\n";
+    md << "\nWritten by `bench_fig7_convergence` (its check table states a-e with their bounds).\n";
     write_file_atomically(o.data_dir + "/fig7_core.md", md.str());
     return t.finish();
 }

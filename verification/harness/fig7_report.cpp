@@ -185,7 +185,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     for (const char* c : {"transport", "dt_max_ms", "dt_max_share"}) columns.push_back(c);
     DataTable runs(columns);
     runs.comment("bench_fig7_convergence: one row per run; kind 0 grid, 1 dt, 2 tracer, 3 floor (T_floor " +
-                 fig7_number(o.T_floor_low) + "), 4 tracer at that floor; explicit 1 for the explicit time stepping; "
+                 fig7_number(o.T_floor_low) + ", the model with the tracer); tracer runs: the core columns hold the tracer's retained share; explicit 1 for the explicit time stepping; "
                  "dt_mean = t_end/steps; transport: index in --transports (-1 explicit); dt_max_share: share of the steps whose dt dt_max set; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
                  "and its sampling error (_se: standard error of the time average over t >= " + fig7_number(o.average_from) +
                  " s, or the jitter over the last " + fig7_number(o.jitter_window) + " s of a value at t_end = " +

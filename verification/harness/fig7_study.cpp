@@ -18,15 +18,14 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace granseg::verify {
 
 namespace {
 
 constexpr const char* kScene = "verification/scenes/tumbler.toml";
-// The tracer rides on the closures of the paper's perfectly mixed start (phi_hat = 0.5), the
-// mixture of the full model's initial bed: the flow it sees is the flow of tumbler-flow.
-constexpr double kTracerMixture = 0.5;
 
 /// A data file's columns by name (from its first line) and rows; "nan" and "inf" read as such.
 struct NamedTable {
@@ -67,8 +66,7 @@ std::string file_text(const std::string& path) {
     return s.str();
 }
 
-bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::tracer_floor; }
-bool is_floor(Fig7Kind k) { return k == Fig7Kind::floor || k == Fig7Kind::tracer_floor; }
+bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::floor; }
 
 /// NAME_nCELLS, a run's name.
 std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
@@ -88,7 +86,7 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
     else flow.insert_or_assign("transport", run.transport);
     flow.insert_or_assign("dt_max", run.dt_max);
-    if (is_floor(run.kind)) flow.insert_or_assign("T_floor", o.T_floor_low);
+    if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (is_tracer(run.kind)) {
         // The tracer fills the drum's own core at that grid: r < d - layer, the layer measured by
         // the reference transport's grid run of the same cells (run before the tracer runs).
@@ -97,10 +95,7 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
         const double r_core = grid_summary.at(grid_summary.last(), "r_core_layer");
         char expression[96];
         std::snprintf(expression, sizeof expression, "sqrt(x^2 + z^2) < %.17g ? 1 : 0", r_core);
-        section("segregation").insert_or_assign("S", 0.0);
-        section("initial").insert_or_assign("phi_hat", std::string(expression));
-        toml::table& coupling = section("coupling");
-        coupling.insert_or_assign("packing_feedback", false), coupling.insert_or_assign("mixture", kTracerMixture);
+        section("initial").insert_or_assign("tracer", std::string(expression));
     }
     std::ostringstream text;
     text << "# bench_fig7_convergence: " << kScene << " as run " << run.name << "\n" << scene << "\n";
@@ -158,7 +153,6 @@ std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
         // the finest grid would double the study's cost.
         const int n = o.cells[o.cells.size() - 2];
         add(cell_name("floor", n), Fig7Kind::floor, false, n, 1.0, first);
-        add(cell_name("tracer_floor", n), Fig7Kind::tracer_floor, false, n, 1.0, first);
     }
     return runs;
 }
@@ -191,17 +185,25 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     r.h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / run.cells;
     r.initial_mixture = summary.at(s, "initial_mixture"), r.packing_spread = summary.at(s, "packing_spread");
     const double t_end = summary.at(s, "t_end");
-    for (int i = 0; i < kFig7Quantities; ++i) {
-        const Fig7Quantity& q = fig7_quantities()[i];
-        r.value[i] = q.scale * summary.at(s, q.summary_column);
+    // A value and its sampling error: the standard error of its time average over t >= average_from,
+    // or its jitter over the last jitter_window before t_end.
+    const auto read = [&](const char* summary_column, const char* history_column, double scale, bool time_average) {
         std::vector<double> t, v;
         for (const std::vector<double>& row : history.rows) {
-            const double ti = history.at(row, "t"), vi = history.at(row, q.history_column);
-            const bool in_window = q.time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
+            const double ti = history.at(row, "t"), vi = history.at(row, history_column);
+            const bool in_window = time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
             if (in_window && std::isfinite(vi)) t.push_back(ti), v.push_back(vi);
         }
-        r.sampling[i] = q.scale * (q.time_average ? batch_mean_error(v) : detrended_spread(t, v));
+        return std::pair{scale * summary.at(s, summary_column), scale * (time_average ? batch_mean_error(v) : detrended_spread(t, v))};
+    };
+    for (int i = 0; i < kFig7Quantities; ++i) {
+        const Fig7Quantity& q = fig7_quantities()[i];
+        std::tie(r.value[i], r.sampling[i]) = read(q.summary_column, q.history_column, q.scale, q.time_average);
     }
+    if (is_tracer(run.kind)) std::tie(r.tracer, r.tracer_sampling) = read("tracer_core_layer", "tracer_core_layer", 1.0, false);
+    // A tracer run repeats its grid run: its core column carries the tracer's retained share.
+    constexpr int kCore = 5;  // fig7_quantities()
+    if (run.kind == Fig7Kind::tracer) r.value[kCore] = r.tracer, r.sampling[kCore] = r.tracer_sampling;
     return r;
 }
 

@@ -15,14 +15,15 @@
 //             at each --explicit-cells
 //   dt        the first transport at the coarsest grid with dt_max times each --dt-coarse factor,
 //             and at the finest with each --dt-fine factor (factors below 1: dt_max keeps binding)
-//   tracer    a passive tracer in the core (S = 0, packing feedback off, closures of the 0.5
-//             mixture via [coupling] mixture, phi_hat = 1 within the drum's own core r_core_layer
-//             of the reference transport's grid run at that grid, 0 elsewhere) at each --cells
-//   floor     the full model and the tracer at the second-finest --cells with T_floor lowered to
-//             --T-floor-low
+//   tracer    the full model (S and packing feedback as in the paper's run) with a passive tracer
+//             ([initial] tracer = 1 within the drum's own core r_core_layer of the reference
+//             transport's grid run at that grid, 0 elsewhere; the tracer does not act on the flow,
+//             so the run repeats that grid run) at each --cells
+//   floor     the same at the second-finest --cells with T_floor lowered to --T-floor-low
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,7 @@ struct Fig7Options {
     double dt_max(int cells, double factor = 1.0) const { return factor * dt_ref * kDtRefCells / cells; }
 };
 
-enum class Fig7Kind { grid, dt, tracer, floor, tracer_floor };
+enum class Fig7Kind { grid, dt, tracer, floor };
 
 struct Fig7Run {
     std::string name;           // also its directory under DIR/fig7_convergence
@@ -86,6 +87,7 @@ struct Fig7Result {
     std::array<double, kFig7Quantities> value{}, sampling{};  // sampling: the standard error of a time
                                                               // average, or the jitter of a value at t_end
     double initial_mixture = 0, packing_spread = 0;
+    double tracer = NAN, tracer_sampling = NAN;  // tracer and floor runs: the tracer's share of the core at t_end
 };
 
 /// A number of the study's scene (verification/scenes/tumbler.toml), or `fallback` where the scene
