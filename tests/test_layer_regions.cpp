@@ -8,6 +8,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace granseg;
@@ -16,15 +17,20 @@ BOOST_AUTO_TEST_SUITE(layer_regions)
 
 namespace {
 constexpr double kD = 0.025, kR = 0.05, kAxis = 0.005, kLayer = 0.012;
+
+/// Phi = 0.6 and phi = share * 0.6 in every inside cell, 0 outside.
+std::pair<std::vector<double>, std::vector<double>> uniform_bed(const Grid& g, double share) {
+    std::vector<double> Phi(g.cells(), 0.0), phi(g.cells(), 0.0);
+    for (std::size_t c = 0; c < Phi.size(); ++c)
+        if (g.is_inside(c)) Phi[c] = 0.6, phi[c] = share * 0.6;
+    return {Phi, phi};
+}
 }  // namespace
 
 // phi = 0.3 Phi everywhere: every region reads 0.3 to round-off (a ratio of two sums of ~1e3 terms).
 BOOST_AUTO_TEST_CASE(a_uniform_mixture_reads_its_share_everywhere) {
-    const DrumSpec drum;
-    const Grid g = drum.grid();
-    std::vector<double> Phi(g.cells(), 0.0), phi(g.cells(), 0.0);
-    for (std::size_t c = 0; c < Phi.size(); ++c)
-        if (g.is_inside(c)) Phi[c] = 0.6, phi[c] = 0.18;
+    const Grid g = DrumSpec{}.grid();
+    const auto [Phi, phi] = uniform_bed(g, 0.3);
     const LayerRegions regions(g, kD, kR, kAxis);
     const LayerRegionShares s = regions.shares(phi, Phi, kLayer, 0.3);
     BOOST_TEST(s.r_core == kD - kLayer, boost::test_tools::tolerance(1e-15));
@@ -53,11 +59,8 @@ BOOST_AUTO_TEST_CASE(the_core_counts_cut_cells_by_their_area) {
 }
 
 BOOST_AUTO_TEST_CASE(a_layer_thicker_than_d_leaves_no_core) {
-    const DrumSpec drum;
-    const Grid g = drum.grid();
-    std::vector<double> Phi(g.cells(), 0.0), phi(g.cells(), 0.0);
-    for (std::size_t c = 0; c < Phi.size(); ++c)
-        if (g.is_inside(c)) Phi[c] = 0.6, phi[c] = 0.3;
+    const Grid g = DrumSpec{}.grid();
+    const auto [Phi, phi] = uniform_bed(g, 0.5);
     const LayerRegionShares s = LayerRegions(g, kD, kR, kAxis).shares(phi, Phi, 2 * kD, 0.3);
     BOOST_TEST(std::isnan(s.core));
     BOOST_TEST(s.ring == 0.5, boost::test_tools::tolerance(1e-12));
