@@ -7,11 +7,13 @@
 #include "segregation/invariants.hpp"
 #include "tumbler/coupled_tables.hpp"
 #include "tumbler/layer_regions.hpp"
+#include "tumbler/material_points.hpp"
 #include "tumbler/packing_contrast.hpp"
 #include "tumbler/tumbler_run.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace granseg {
 
@@ -57,7 +59,8 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
                        "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
                        "substeps", "dt", "layer_thickness", "axis", "packing_contrast", "r_core_layer", "core_layer",
-                       "ring_layer", "periphery_layer", "axis_layer", "tracer_core_layer"});
+                       "ring_layer", "periphery_layer", "axis_layer", "tracer_core_layer",
+                       "points_core_layer"});
     history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
                     "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
@@ -68,7 +71,9 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
                     "layer's thickness (its mean over t >= angle_from once there, else the present one), cells weighted by "
                     "their exact area inside each region; tracer_core_layer: the passive tracer's share tau/Phi of the core "
-                    "(NaN without a tracer)");
+                    "(NaN without a tracer); points_core_layer: of the material points (four per bed cell at t = 0, carried "
+                    "through the velocity relative to the drum, material_points.hpp) within the core, the share that "
+                    "started where the tracer's share is >= 1/2 (NaN without a tracer)");
     PackingContrastOptions contrast_options;
     contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
     TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
@@ -76,7 +81,9 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
     const LayerRegions own_regions(grid, drum.surface_height(), drum.radius(), kAxisShare * drum.diameter);
     LayerRegionShares own;
-    double tracer_core = NAN;
+    double tracer_core = NAN, points_core = NAN;
+    std::optional<MaterialPoints> points;
+    if (tumbler.setup().tracer0) points.emplace(grid, flow.Phi(), level, tumbler.setup().tracer0);
     PatternMetrics metrics;
     PackingContrast contrast;
     int snapshot = 0, frame = 0;
@@ -107,10 +114,12 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
             const double delta = layer.samples() > 0 ? layer.mean() : thickness;
             own = own_regions.shares(tumbler.phi(), flow.Phi(), delta, level);
             if (!tumbler.tracer().empty()) tracer_core = own_regions.shares(tumbler.tracer(), flow.Phi(), delta, level).core;
+            if (points) points_core = points->marked_share_within(own.r_core);
             history.row({flow.time(), static_cast<double>(flow.steps()), amount[0], amount[1], metrics.index, surface_angle,
                          metrics.ring, metrics.periphery, metrics.core, small_change, large_change, d.flowing_fraction,
                          d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt(), thickness, axis,
-                         contrast.contrast, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core});
+                         contrast.contrast, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core,
+                         points_core});
         }
         if (options.run.vtk && due(next_snapshot)) {
             next_snapshot += options.run.snapshot_every;
@@ -124,7 +133,8 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     sample();
     Progress progress("tumbler", t_end);
     while (flow.time() < t_end) {
-        tumbler.step(t_end);
+        const double dt = tumbler.step(t_end);
+        if (points) points->advance(flow.u(0), flow.u(2), dt);
         if (observer) observer(tumbler);
         sample();
         progress.update(flow.time());
@@ -145,9 +155,10 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                static_cast<double>(grid.inside_cells())};
     append_flow_work(flow, columns, values);
     for (const char* c : {"layer_mean", "layer_std", "axis", "r_core_layer", "core_layer", "ring_layer", "periphery_layer", "axis_layer",
-                          "tracer_core_layer"})
+                          "tracer_core_layer", "points_core_layer"})
         columns.push_back(c);
-    for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core})
+    for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core,
+                      points_core})
         values.push_back(v);
     DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +

@@ -102,6 +102,18 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
             known(K_known, K_ext) + " +- " + fig7_number(U_K, 3));
         row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", known(K_known, K_ext - K1));
         row("material exchanged by the model's creep, 1 - K_ext", known(K_known, 1.0 - K_ext));
+        // The material points carry no numerical diffusion: what they lose the flow moves, and what
+        // the tracer loses beyond them the grid smears (each where established).
+        const Fig7Estimate* points = a.find(kCore, "points");
+        const double P1 = K_run->points, P_se = K_run->points_sampling;
+        const bool P_known = points && (established(points) || points->g.condition == Convergence::within_noise);
+        const double P_lim = points && established(points) ? points->g.f0 : P1;
+        const double smear = P1 - K1;
+        const bool smear_known = std::isfinite(smear) && std::fabs(smear) > 2.0 * std::hypot(P_se, K_run->sampling[kCore]);
+        row("material points: share of the core's points at t_end that started there, finest grid", fig7_number(P1));
+        row("what the flow moves out of the core (points), 1 - P" + std::string(points && established(points) ? "_ext" : "(h1)"),
+            known(P_known, 1.0 - P_lim));
+        row("what the grid smears at the finest grid, P(h1) - K(h1)", known(smear_known, smear));
         row("T_floor " + fig7_number(o.T_floor_low) + " instead of the scene's at " + std::to_string(floor->run.cells) +
                 " cells: retained share (tracer)", fig7_number(floor->tracer));
         row("core share: discretisation part C(h1) - C_ext", known(C_known, discretisation));
@@ -113,7 +125,7 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
         row("moves phi_hat in the core most", largest_text);
         t.note("d. core: C(h1) = " + fig7_number(C1) + " (initial " + fig7_number(m0) + "); tracer retained share " + fig7_number(K1) +
                " (h -> 0: " + known(K_known, K_ext) + " +- " + fig7_number(U_K, 3) + "), at the lower floor " +
-               fig7_number(floor->tracer));
+               fig7_number(floor->tracer) + "; material points " + fig7_number(P1));
         t.note("d. core change split: discretisation " + known(C_known, discretisation) + ", floor " + known(floor_known, floor_part) +
                ", the rest " + known(C_known, model) + ": most from " + largest_text);
     }

@@ -17,8 +17,8 @@ namespace {
 // the coarsest grid.
 int series_code(const std::string& s, const Fig7Analysis& a) {
     if (s == a.reference_series) return 0;
-    const char* const fixed[] = {"", "explicit", "dt finest", "tracer", "", "dt coarsest"};
-    for (int i = 1; i < 6; ++i)
+    const char* const fixed[] = {"", "explicit", "dt finest", "tracer", "", "dt coarsest", "points"};
+    for (int i = 1; i < 7; ++i)
         if (s == fixed[i]) return i;
     return 4;
 }
@@ -41,9 +41,12 @@ Fig7Estimate estimate(int q, const std::string& series, const std::vector<const 
     Fig7Estimate e;
     e.quantity = q, e.series = series;
     for (const Fig7Result* r : runs) {
+        // The points series: the material points' retained share in place of the core quantity.
+        const bool points = series == "points";
+        const double f = points ? r->points : r->value[q], se = points ? r->points_sampling : r->sampling[q];
         e.h.push_back(dt_axis ? r->dt_mean : r->h);
-        e.f.push_back(r->value[q]), e.se.push_back(r->sampling[q]);
-        if (std::isfinite(r->sampling[q])) e.se_max = std::max(e.se_max, r->sampling[q]);
+        e.f.push_back(f), e.se.push_back(se);
+        if (std::isfinite(se)) e.se_max = std::max(e.se_max, se);
     }
     const bool increasing = std::is_sorted(e.h.begin(), e.h.end()) && std::adjacent_find(e.h.begin(), e.h.end()) == e.h.end();
     const bool defined = std::all_of(e.f.begin(), e.f.end(), [](double v) { return std::isfinite(v); });
@@ -68,7 +71,8 @@ std::string flags_text(const Fig7Estimate& e) {
 }
 
 std::string series_text(const Fig7Estimate& e, const Fig7Analysis& a) {
-    if (e.series == "tracer") return "tracer in the core (S = 0)";
+    if (e.series == "tracer") return "tracer in the core (full model)";
+    if (e.series == "points") return "material points in the core (no numerical diffusion)";
     if (e.series == "explicit") return "explicit time stepping";
     if (e.series.rfind("dt ", 0) == 0) {
         const int n = e.series == "dt finest" ? a.finest().run.cells : a.runs(Fig7Kind::grid, false, a.reference_series).back()->run.cells;
@@ -175,6 +179,7 @@ Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o)
     const auto tracer = a.runs(Fig7Kind::tracer, false);
     const int core = 5;  // fig7_quantities(): the core's share, for the tracer its retained share
     if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "tracer", tracer, false));
+    if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "points", tracer, false));
     return a;
 }
 
@@ -205,7 +210,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
                     "e_a", "e_ext", "chi2", "chi2_95", "lo", "hi", "outside"});
     conv.comment("bench_fig7_convergence: quantity 0..7 = angle layer index ring periphery core contrast axis; series 0 the "
                  "reference transport (h), 1 explicit (h), 2 dt at the finest grid (mean dt), 3 tracer (core), 4 the second "
-                 "transport (h), 5 dt at the coarsest grid; x1 = finest h (mm) or dt (ms); condition 0 "
+                 "transport (h), 5 dt at the coarsest grid, 6 material points (core); x1 = finest h (mm) or dt (ms); condition 0 "
                  "monotone, 1 oscillatory, 2 divergent, 3 within noise, 4 two grids, 5 undetermined; p, f0: least-squares "
                  "fit f = f0 + alpha h^p weighted by 1/se^2; p_u, fs: Roy's order and factor of safety; sigma: standard "
                  "deviation of the fit at p_u; U: uncertainty of f1 (harness/grid_convergence.hpp); e_a = |f1 - f2|/|f1|, "
@@ -221,7 +226,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
         const Fig7Quantity& q = quantities[e.quantity];
         std::string values;
         for (double f : e.f) values += (values.empty() ? "" : ", ") + fig7_number(f);
-        const std::string label = e.series == "tracer" ? "core: share of its t = 0 material" : q.label;
+        const std::string label = e.series == "tracer" || e.series == "points" ? "core: share of its t = 0 material" : q.label;
         md << "| " << label << (std::string(q.unit) == "-" ? "" : " (" + std::string(q.unit) + ")") << " | " << series_text(e, a)
            << " | " << values << " | " << cell(e.se_max, 3) << " | " << condition_text(e) << " | " << cell(g.p, 4) << " | "
            << (std::isnan(g.fs) ? "–" : fig7_number(g.fs, 3) + " (" + fig7_number(g.p_u, 4) + ")") << " | " << cell(g.f0)

@@ -200,7 +200,10 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         const Fig7Quantity& q = fig7_quantities()[i];
         std::tie(r.value[i], r.sampling[i]) = read(q.summary_column, q.history_column, q.scale, q.time_average);
     }
-    if (is_tracer(run.kind)) std::tie(r.tracer, r.tracer_sampling) = read("tracer_core_layer", "tracer_core_layer", 1.0, false);
+    if (is_tracer(run.kind)) {
+        std::tie(r.tracer, r.tracer_sampling) = read("tracer_core_layer", "tracer_core_layer", 1.0, false);
+        std::tie(r.points, r.points_sampling) = read("points_core_layer", "points_core_layer", 1.0, false);
+    }
     // A tracer run repeats its grid run: its core column carries the tracer's retained share.
     constexpr int kCore = 5;  // fig7_quantities()
     if (run.kind == Fig7Kind::tracer) r.value[kCore] = r.tracer, r.sampling[kCore] = r.tracer_sampling;

@@ -88,6 +88,7 @@ struct Fig7Result {
                                                               // average, or the jitter of a value at t_end
     double initial_mixture = 0, packing_spread = 0;
     double tracer = NAN, tracer_sampling = NAN;  // tracer and floor runs: the tracer's share of the core at t_end
+    double points = NAN, points_sampling = NAN;  // and the material points' (no numerical diffusion)
 };
 
 /// A number of the study's scene (verification/scenes/tumbler.toml), or `fallback` where the scene
