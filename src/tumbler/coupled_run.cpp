@@ -81,7 +81,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
     BoundsMonitor bounds;
     double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
-    const LayerRegions own_regions(grid, drum.surface_height(), drum.radius(), kAxisShare * drum.diameter);
+    const LayerRegions own_regions(grid, closest_surface_distance(drum), drum.radius(), kAxisShare * drum.diameter);
     LayerRegionShares own;
     double tracer_core = NAN, points_core = NAN;
     std::optional<MaterialPoints> points;
