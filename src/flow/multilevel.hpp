@@ -8,11 +8,11 @@
 //   invariants  every level is again a diagonal plus a weighted graph Laplacian; new values
 //               re-add sums along maps built once, without allocation
 //
-// Used by the pressure solve (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 2, S4): symmetric positive definite matrices
+// Used by the pressure solve (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive definite matrices
 // A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with
 // faces of weight 0, the inside cells of a drum an irregular part of the grid).
 //
-// The choice (docs/flow_solver.md Sect. 2, S4, "The multilevel preconditioner"):
+// The choice (docs/flow_solver.md Sect. 2, pressure_solve, "The multilevel preconditioner"):
 // * Aggregation: the cells of each 2 x 2 (x 2) block of the grid form one coarse cell (on the
 //   coarse grid again, level by level), whatever the mask; the prolongation P is piecewise
 //   constant, so the coarse matrix is the Galerkin product A_c = P^T A P, formed from the actual

@@ -1,4 +1,4 @@
-// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 2, S4).
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 2, pressure_solve).
 //
 //   solves      F(dp) = 0 (below) for the pressure increments dp, by Newton's method with
 //               multilevel-preconditioned conjugate gradients for each Newton step
