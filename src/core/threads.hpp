@@ -15,9 +15,12 @@
 namespace granseg {
 
 /// Grids of fewer cells (all grid cells, inside or not) run on one thread. The crossover measured
-/// on the drum (docs/flow_solver_choices.md, "Threads"): below it a second thread costs more in
-/// waking and waiting than it takes over.
-constexpr std::size_t kParallelCells = 2048;
+/// on the coupled drum, two threads against one, wall and CPU time (docs/flow_solver_choices.md,
+/// "Threads"): 50 cells per diameter (2,500 grid cells) 0.99 / 1.92, 71 (5,041) 0.93 / 1.82,
+/// 100 (10,000) 0.76 / 1.47: below about 8,000 cells a second thread buys a few per cent of wall
+/// time for nearly twice the CPU, since per step the threads meet some 200 times (fork, join,
+/// barrier) around loops of a few microseconds each.
+constexpr std::size_t kParallelCells = 8192;
 
 /// True if loops over a grid of `cells` cells run on the OpenMP threads.
 inline bool threads_pay(std::size_t cells) { return cells >= kParallelCells; }
