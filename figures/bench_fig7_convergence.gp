@@ -1,13 +1,13 @@
 # The Fig. 7 quantities against the cell size h (solution verification of the paper's drum): each
-# run with its sampling error, both time-stepping modes; the band f1 +- GCI (where the h -> 0 value
-# lies) from the finest run to h = 0 and the Richardson-extrapolated value at h = 0; the dt_max
+# run with its sampling error, both time-stepping modes; the band f1 +- U (where the h -> 0 value
+# lies) from the finest run to h = 0 and the least-squares limit f0 at h = 0; the dt_max
 # study's runs (halved, doubled) beside the finest grid.
 # needs: bench_fig7_convergence
 # reads: fig7_runs.dat fig7_convergence.dat
 # Data: fig7_runs.dat (kind explicit cells h_mm dt_factor dt_mean_ms steps wall_s cpu_s, then per
 #       quantity value and _se: angle layer index ring periphery core contrast axis from column 10);
-#       fig7_convergence.dat (quantity series runs x1 f1 f_ext gci lo hi condition R p asymptotic se
-#       noise; series 0 default, 1 explicit, 2 dt, 3 tracer).
+#       fig7_convergence.dat (quantity series runs x1 f1 se_max condition p f0 p_u fs sigma U e_a e_ext
+#       chi2 chi2_95 lo hi outside; series 0 default, 1 explicit, 2 dt, 3 tracer).
 # Usage (from the Makefile): gnuplot -e "benchdir='build/bench-data'; outfile='x.png'" figures/bench_fig7_convergence.gp
 runs = benchdir.'/fig7_runs.dat'
 conv = benchdir.'/fig7_convergence.dat'
@@ -16,32 +16,32 @@ set output outfile
 array names[8] = ["dynamic angle of repose [deg]", "flowing-layer thickness [mm]", "segregation index", \
                   "ring: small-particle share", "periphery: small-particle share", "core: small-particle share", \
                   "Fig. 7d contrast (Phi mixed - pure)", "share within 0.05 D of the axis"]
-cond(c) = c == 0 ? "monotone" : c == 1 ? "oscillatory" : c == 2 ? "divergent" : c == 3 ? "undetermined" : "two grids"
+cond(c) = c == 0 ? "monotone" : c == 1 ? "oscillatory" : c == 2 ? "divergent" : c == 3 ? "within noise" : c == 4 ? "two grids" : "undetermined"
 stats runs u 4 nooutput
 hmax = 1.15 * STATS_max
-set multiplot layout 3,3 title "Fig. 7 quantities against the cell size h. Blue circles: default time stepping; red squares: explicit; green triangles: default with dt_max halved (left) and doubled (right)\nbars: sampling error; shaded: the finest run's value +- its GCI (blue three grids, Fs 1.25; red two grids, Fs 3, order 1 assumed); diamonds at h = 0: extrapolated values"
+set multiplot layout 3,3 title "Fig. 7 quantities against the cell size h. Blue circles: default time stepping; red squares: explicit; green triangles: default with dt_max halved (left) and doubled (right)\nbars: sampling error; shaded: the finest run's value +- its uncertainty U (blue: least-squares fit over all grids, Fs by Roy's rule; red: two grids, Fs 3, order 1 assumed); diamonds at h = 0: extrapolated limits"
 set grid
 set xrange [0:hmax]
 set xlabel "h [mm]"
 unset key
 set style fill transparent solid 0.18 noborder
 do for [q = 0:7] {
-    stats conv u (($1 == q && $2 == 0) ? $10 : 1/0) nooutput
+    stats conv u (($1 == q && $2 == 0) ? $7 : 1/0) nooutput
     c = STATS_max
     p = 0
-    if (c == 0) { stats conv u (($1 == q && $2 == 0) ? $12 : 1/0) nooutput; p = STATS_max }
+    if (c == 0) { stats conv u (($1 == q && $2 == 0) ? $8 : 1/0) nooutput; p = STATS_max }
     set title sprintf("%s\ndefault: %s%s", names[q+1], cond(c), c == 0 ? sprintf(", p = %.2f", p) : "")
     v = 10 + 2*q
-    plot conv u (($1 == q && $2 == 0) ? $4/2 : 1/0):5:($4/2):7 w boxxyerror lc rgb "#1f77b4" t "default: f1 +- GCI", \
-         conv u (($1 == q && $2 == 1) ? $4/2 : 1/0):5:($4/2):7 w boxxyerror lc rgb "#d62728" t "explicit: f1 +- GCI (Fs 3)", \
+    plot conv u (($1 == q && $2 == 0) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#1f77b4" t "default: f1 +- U", \
+         conv u (($1 == q && $2 == 1) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#d62728" t "explicit: f1 +- U (Fs 3)", \
          runs u (($1 == 0 && $2 == 0) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 7 lc rgb "#1f77b4" t "default", \
          runs u (($1 == 0 && $2 == 1) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 5 lc rgb "#d62728" t "explicit", \
          runs u (($1 == 1) ? $4 * ($5 < 1 ? 0.96 : 1.04) : 1/0):v:(column(v+1)) w yerrorbars pt 9 ps 1.3 lc rgb "#2ca02c" t "default, dt_max x 0.5 (left), x 2", \
-         conv u (($1 == q && $2 == 0) ? 0 : 1/0):6 w p pt 13 ps 2 lc rgb "#1f77b4" t "default: extrapolated", \
-         conv u (($1 == q && $2 == 1) ? 0 : 1/0):6 w p pt 12 ps 2 lc rgb "#d62728" t "explicit: extrapolated (p = 1)"
+         conv u (($1 == q && $2 == 0) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#1f77b4" t "default: extrapolated", \
+         conv u (($1 == q && $2 == 1) ? 0 : 1/0):9 w p pt 12 ps 2 lc rgb "#d62728" t "explicit: extrapolated (p = 1)"
 }
 set title "passive tracer (S = 0) started in the core:\nshare of the core's material at t_end that started there"
-plot conv u (($1 == 5 && $2 == 3) ? $4/2 : 1/0):5:($4/2):7 w boxxyerror lc rgb "#9467bd" t "f1 +- GCI", \
+plot conv u (($1 == 5 && $2 == 3) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#9467bd" t "f1 +- U", \
      runs u (($1 == 2) ? $4 : 1/0):20:21 w yerrorlines lw 2 pt 7 lc rgb "#9467bd" t "tracer runs", \
-     conv u (($1 == 5 && $2 == 3) ? 0 : 1/0):6 w p pt 13 ps 2 lc rgb "#9467bd" t "extrapolated"
+     conv u (($1 == 5 && $2 == 3) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#9467bd" t "extrapolated"
 unset multiplot

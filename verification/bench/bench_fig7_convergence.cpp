@@ -149,9 +149,10 @@ int main(int argc, char** argv) {
     const std::vector<std::string> answers = write_fig7_work(analysis, o);
     std::printf("\n");
     for (const Fig7Estimate& e : analysis.estimates)
-        std::printf("%-9s %-8s %-12s p %-8s f_ext %-10s U %-9s (se %s)\n", fig7_quantities()[e.quantity].name, e.series.c_str(),
-                    convergence_name(e.g.condition).c_str(), fig7_number(e.g.p, 3).c_str(), fig7_number(e.g.f_ext).c_str(),
-                    fig7_number(e.g.uncertainty, 3).c_str(), fig7_number(e.se, 2).c_str());
+        std::printf("%-9s %-8s %-12s p %-8s Fs %-4s f0 %-10s%s U %-9s (se %s)\n", fig7_quantities()[e.quantity].name, e.series.c_str(),
+                    convergence_name(e.g.condition).c_str(), fig7_number(e.g.p, 4).c_str(), fig7_number(e.g.fs, 3).c_str(),
+                    fig7_number(e.g.f0).c_str(), e.g.outside_bounds ? " (outside its range)" : "", fig7_number(e.g.uncertainty, 4).c_str(),
+                    fig7_number(e.se_max, 3).c_str());
     std::printf("\n");
     for (const std::string& a : answers) std::printf("%s\n", a.c_str());
     std::printf("\n");

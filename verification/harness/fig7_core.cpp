@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace granseg::verify {
 
@@ -49,8 +50,8 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
     const Fig7Estimate& core = *a.find(kCore, "default");
     row("small-particle share of the core, finest grid (initial " + fig7_number(m0) + ")", fig7_number(C1));
     row("the same, h -> 0 (" + convergence_name(core.g.condition) + ")",
-        (std::isnan(core.g.f_ext) ? "range " + fig7_number(core.g.lo) + " – " + fig7_number(core.g.hi) : fig7_number(core.g.f_ext)) +
-            " +- " + fig7_number(core.g.uncertainty, 2));
+        (std::isnan(core.g.f0) ? "range " + fig7_number(core.g.lo) + " – " + fig7_number(core.g.hi) : fig7_number(core.g.f0)) +
+            (core.g.outside_bounds ? " (outside [0, 1])" : "") + "; U of the finest " + fig7_number(core.g.uncertainty, 3));
     if (!o.core_study) {
         t.note("d. the core: not studied (--no-core-study)");
     } else {
@@ -59,41 +60,47 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
                          *K_floor = only_run(a, Fig7Kind::tracer_floor);
         const double K1 = K_run->value[kCore], U_K = tracer ? tracer->g.uncertainty : std::nan("");
         t.at_least("d. mainly untouched core: tracer's retained share - U", K1 - U_K, kMainly);
-        const bool K_extrapolated = tracer && tracer->g.condition == Convergence::monotone;
-        const double K_ext = K_extrapolated ? tracer->g.f_ext : K1;
-        // The split of C1 - m0 (see the header); without a monotone series the discretisation part
-        // is known only in size (its uncertainty), and the model's part is not separated from it.
-        const bool C_extrapolated = core.g.condition == Convergence::monotone;
-        const double discretisation = C_extrapolated ? C1 - core.g.f_ext : core.g.uncertainty;
+        // A part is established only where its series allows it: an extrapolation that is monotone
+        // and inside [0, 1], a difference of two runs beyond twice its sampling error; the split
+        // subtracts only established parts and prints "not established" for the others.
+        const auto established = [](const Fig7Estimate* e) {
+            return e && e->g.condition == Convergence::monotone && !e->g.outside_bounds;
+        };
+        const std::string kNot = "not established";
+        const bool K_known = established(tracer), C_known = established(&core);
+        const double K_ext = K_known ? tracer->g.f0 : std::nan("");
+        const double discretisation = C1 - core.g.f0;
         const double floor_part = C1 - floor->value[kCore];
-        const double model = C1 - m0 - (C_extrapolated ? discretisation : 0.0) - floor_part;
-        const std::array<std::pair<double, const char*>, 3> parts{{
-            {std::fabs(discretisation), "numerical diffusion (the grid)"},
-            {std::fabs(floor_part), "segregation at the temperature floor"},
-            {std::fabs(model), "the model's own transport (creep below the layer) and segregation above the floor"}}};
+        const bool floor_known = std::fabs(floor_part) > 2.0 * std::hypot(fine.sampling[kCore], floor->sampling[kCore]);
+        const double model = C1 - m0 - discretisation - (floor_known ? floor_part : 0.0);
+        std::vector<std::pair<double, const char*>> parts;
+        if (C_known) parts.push_back({std::fabs(discretisation), "numerical diffusion (the grid)"});
+        if (floor_known) parts.push_back({std::fabs(floor_part), "segregation at the temperature floor"});
+        if (C_known) parts.push_back({std::fabs(model), "the model's own transport (creep below the layer) and segregation above the floor"});
         const auto largest = std::max_element(parts.begin(), parts.end());
+        const std::string largest_text = C_known ? largest->second : kNot + " (the grid's part is not established)";
         // The reach of segregation where T sits at its floor: |a| <= S0 sqrt(T_floor) |g| (eq. 46).
         const double S0 = fig7_scene_number("segregation", "S", CoupledTumblerSetup{}.S);
         const double T_floor = fig7_scene_number("flow", "T_floor", FlowSettings{}.T_floor);
         const double g = fig7_scene_number("drum", "gravity", DrumSpec{}.gravity);
+        const auto known = [&](bool ok, double v) { return ok ? fig7_number(v) : kNot; };
         row("tracer (S = 0): share of the core's material at t_end that started there, finest grid", fig7_number(K1));
         row("the same, h -> 0 (" + (tracer ? convergence_name(tracer->g.condition) : std::string("one grid")) + ")",
-            (K_extrapolated ? fig7_number(K_ext) : "–") + " +- " + fig7_number(U_K, 2));
-        row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", K_extrapolated ? fig7_number(K_ext - K1, 3) : "–");
-        row("material exchanged by the model's creep, 1 - K_ext", fig7_number(1.0 - K_ext, 3));
+            known(K_known, K_ext) + " +- " + fig7_number(U_K, 3));
+        row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", known(K_known, K_ext - K1));
+        row("material exchanged by the model's creep, 1 - K_ext", known(K_known, 1.0 - K_ext));
         row("T_floor " + fig7_number(o.T_floor_low) + " instead of the scene's: retained share (tracer)", fig7_number(K_floor->value[kCore]));
-        row("core share: discretisation part C(h1) - C_ext" + std::string(C_extrapolated ? "" : " (not monotone: its size, the GCI)"),
-            fig7_number(discretisation, 3));
-        row("core share: the floor's part C(h1) - C(h1, lower T_floor)", fig7_number(floor_part, 3));
-        row("core share: the rest (creep and segregation above the floor)", fig7_number(model, 3));
+        row("core share: discretisation part C(h1) - C_ext", known(C_known, discretisation));
+        row("core share: the floor's part C(h1) - C(h1, lower T_floor)", known(floor_known, floor_part));
+        row("core share: the rest (creep and segregation above the floor)", known(C_known, model));
         row("largest reach of segregation at the floor, S0 sqrt(T_floor) g t_end (m; a cell: " + fig7_number(fine.h, 3) + " m)",
-            fig7_number(S0 * std::sqrt(T_floor) * g * o.t_end, 2));
-        row("moves phi_hat in the core most", largest->second);
+            fig7_number(S0 * std::sqrt(T_floor) * g * o.t_end, 3));
+        row("moves phi_hat in the core most", largest_text);
         t.note("d. core: C(h1) = " + fig7_number(C1) + " (initial " + fig7_number(m0) + "); tracer retained share " + fig7_number(K1) +
-               " (h -> 0: " + fig7_number(K_ext) + " +- " + fig7_number(U_K, 2) + "), at the lower floor " +
+               " (h -> 0: " + known(K_known, K_ext) + " +- " + fig7_number(U_K, 3) + "), at the lower floor " +
                fig7_number(K_floor->value[kCore]));
-        t.note("d. core change split: discretisation " + fig7_number(discretisation, 3) + ", floor " + fig7_number(floor_part, 3) +
-               ", the rest " + fig7_number(model, 3) + ": most from " + largest->second);
+        t.note("d. core change split: discretisation " + known(C_known, discretisation) + ", floor " + known(floor_known, floor_part) +
+               ", the rest " + known(C_known, model) + ": most from " + largest_text);
     }
     md << "\nWritten by `bench_fig7_convergence` (its check table states a-d with their bounds).\n";
     write_file_atomically(o.data_dir + "/fig7_core.md", md.str());

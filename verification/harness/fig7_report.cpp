@@ -13,9 +13,6 @@ namespace granseg::verify {
 namespace {
 
 const char* const kSeries[] = {"default", "explicit", "dt", "tracer"};
-// An observed order outside [1/2, 2] times the formal order says the grids are not in the
-// asymptotic range: the extrapolation is reported but flagged, and its GCI formed with a limited
-// order and Fs = 3 (grid_convergence.hpp).
 
 int series_code(const std::string& s) {
     for (int i = 0; i < 4; ++i)
@@ -23,13 +20,14 @@ int series_code(const std::string& s) {
     return -1;
 }
 
-/// The range rule for values whose abscissae do not increase (a dt study whose step bounds held
-/// dt): no order, the whole range as the uncertainty; all NaN if a value is undefined (a contrast
-/// without depth bins holding both kinds of cell).
+/// Runs that allow no study (abscissae that do not increase: a dt study whose step bounds held
+/// dt; or an undefined value: a contrast without depth bins holding both kinds of cell): no order,
+/// the whole range as the uncertainty (NaN if a value is undefined).
 GridConvergence range_of(const std::vector<double>& f) {
     GridConvergence g;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    g.condition = Convergence::undetermined, g.R = g.p = g.f_ext = g.asymptotic = g.fs = nan;
+    g.condition = Convergence::undetermined, g.grids = static_cast<int>(f.size());
+    g.p = g.f0 = g.p_u = g.fs = g.eps = g.sigma = g.e_a = g.e_ext = g.chi2 = g.chi2_limit = g.data_range = nan;
     g.lo = *std::min_element(f.begin(), f.end()), g.hi = *std::max_element(f.begin(), f.end());
     g.uncertainty = g.hi - g.lo;
     if (!std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) g.lo = g.hi = g.uncertainty = nan;
@@ -39,33 +37,31 @@ GridConvergence range_of(const std::vector<double>& f) {
 Fig7Estimate estimate(int q, const std::string& series, const std::vector<const Fig7Result*>& runs, bool dt_axis) {
     Fig7Estimate e;
     e.quantity = q, e.series = series;
-    const std::size_t n = std::min<std::size_t>(runs.size(), 3);
-    for (std::size_t i = 0; i < n; ++i) {
-        e.h.push_back(dt_axis ? runs[i]->dt_mean : runs[i]->h);
-        e.f.push_back(runs[i]->value[q]);
-        e.se = std::max(e.se, runs[i]->sampling[q]);
+    for (const Fig7Result* r : runs) {
+        e.h.push_back(dt_axis ? r->dt_mean : r->h);
+        e.f.push_back(r->value[q]), e.se.push_back(r->sampling[q]);
+        if (std::isfinite(r->sampling[q])) e.se_max = std::max(e.se_max, r->sampling[q]);
     }
     const bool increasing = std::is_sorted(e.h.begin(), e.h.end()) && std::adjacent_find(e.h.begin(), e.h.end()) == e.h.end();
     const bool defined = std::all_of(e.f.begin(), e.f.end(), [](double v) { return std::isfinite(v); });
-    if (!increasing || !defined)
-        e.g = range_of(e.f);
-    else if (n == 3)
-        e.g = three_grid_convergence({e.h[0], e.h[1], e.h[2]}, {e.f[0], e.f[1], e.f[2]}, 1.25, kFormalOrder);
-    else
-        e.g = two_grid_convergence({e.h[0], e.h[1]}, {e.f[0], e.f[1]}, kFormalOrder);
-    for (std::size_t i = 0; i + 1 < n; ++i) e.noise = e.noise || std::fabs(e.f[i + 1] - e.f[i]) < 2.0 * e.se;
+    const Fig7Quantity& quantity = fig7_quantities()[q];
+    e.g = increasing && defined ? grid_convergence(e.h, e.f, e.se, kFormalOrder, Bounds{quantity.lower, quantity.upper}) : range_of(e.f);
     return e;
 }
 
 /// A table cell: the number, or a dash where it is not defined.
-std::string cell(double v, int digits = 4) { return std::isnan(v) ? "–" : fig7_number(v, digits); }
+std::string cell(double v, int digits = 6) { return std::isnan(v) ? "–" : fig7_number(v, digits); }
 
 std::string condition_text(const Fig7Estimate& e) {
     std::string s = convergence_name(e.g.condition);
-    if (e.g.condition == Convergence::monotone && e.g.p_gci != e.g.p)
-        s += ", p far from " + fig7_number(kFormalOrder) + ": GCI with p = " + fig7_number(e.g.p_gci, 3) + ", Fs = 3";
-    if (e.noise) s += ", within noise";
+    if (e.g.condition == Convergence::monotone && !(e.g.sigma < e.g.data_range)) s += ", poor fit (sigma >= data range)";
     return s;
+}
+
+std::string flags_text(const Fig7Estimate& e) {
+    if (!e.g.outside_bounds) return "";
+    const Fig7Quantity& q = fig7_quantities()[e.quantity];
+    return "limit outside [" + fig7_number(q.lower) + ", " + fig7_number(q.upper) + "]: fit used outside its range";
 }
 
 std::string series_text(const Fig7Estimate& e, const Fig7Analysis& a) {
@@ -101,15 +97,19 @@ std::vector<const Fig7Result*> Fig7Analysis::runs(Fig7Kind kind, bool explicit_s
 
 const Fig7Result& Fig7Analysis::finest() const { return *runs(Fig7Kind::grid, false).front(); }
 
+namespace {
+bool extrapolated(const Fig7Estimate& e) { return e.g.condition == Convergence::monotone && !e.g.outside_bounds; }
+}  // namespace
+
 double Fig7Analysis::reference(int q) const {
     const Fig7Estimate* e = find(q, "default");
-    return e->g.condition == Convergence::monotone ? e->g.f_ext : e->f[0];
+    return extrapolated(*e) ? e->g.f0 : e->f[0];
 }
 
 double Fig7Analysis::reference_uncertainty(int q) const { return find(q, "default")->g.uncertainty; }
 
 std::string Fig7Analysis::reference_note(int q) const {
-    return find(q, "default")->g.condition == Convergence::monotone
+    return extrapolated(*find(q, "default"))
                ? "the default series' extrapolated value"
                : "the finest default run (" + convergence_name(find(q, "default")->g.condition) + ": no extrapolation)";
 }
@@ -155,29 +155,31 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     }
     write_file_atomically(o.data_dir + "/fig7_runs.dat", runs.str());
 
-    DataTable conv({"quantity", "series", "runs", "x1", "f1", "f_ext", "gci", "lo", "hi", "condition", "R", "p", "asymptotic",
-                    "se", "noise"});
+    DataTable conv({"quantity", "series", "runs", "x1", "f1", "se_max", "condition", "p", "f0", "p_u", "fs", "sigma", "U",
+                    "e_a", "e_ext", "chi2", "chi2_95", "lo", "hi", "outside"});
     conv.comment("bench_fig7_convergence: quantity 0..7 = angle layer index ring periphery core contrast axis; series 0 default "
-                 "(h), 1 explicit (h), 2 dt (default, mean dt), 3 tracer (core); x1 = finest h (mm) or dt (ms); gci = the "
-                 "uncertainty of f1 (GCI when monotone or two grids, else half the range if oscillatory, the range if "
-                 "divergent or undetermined); condition 0 monotone, 1 oscillatory, 2 divergent, 3 undetermined, 4 two grids; "
-                 "se: largest sampling error of the runs; noise 1: a difference between runs below 2 se");
+                 "(h), 1 explicit (h), 2 dt (default, mean dt), 3 tracer (core); x1 = finest h (mm) or dt (ms); condition 0 "
+                 "monotone, 1 oscillatory, 2 divergent, 3 within noise, 4 two grids, 5 undetermined; p, f0: least-squares "
+                 "fit f = f0 + alpha h^p weighted by 1/se^2; p_u, fs: Roy's order and factor of safety; sigma: standard "
+                 "deviation of the fit at p_u; U: uncertainty of f1 (harness/grid_convergence.hpp); e_a = |f1 - f2|/|f1|, "
+                 "e_ext = |f0 - f1|/|f0|; chi2 of a constant and its 95 % quantile; outside 1: f0 outside the physical range");
     std::ostringstream md;
-    md << "| quantity | series | values, fine to coarse | R | condition | p | extrapolated | GCI (or range rule) | range | "
-          "sampling error |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    md << "| quantity | series | values, fine to coarse | largest sampling error | condition | p | Fs (p_u) | limit f0 | "
+          "U of the finest | e_a | e_ext | flag |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Estimate& e : a.estimates) {
         const GridConvergence& g = e.g;
         conv.row({static_cast<double>(e.quantity), static_cast<double>(series_code(e.series)), static_cast<double>(e.f.size()),
-                  1e3 * e.h[0], e.f[0], g.f_ext, g.uncertainty, g.lo, g.hi, static_cast<double>(g.condition), g.R, g.p,
-                  g.asymptotic, e.se, e.noise ? 1.0 : 0.0});
+                  1e3 * e.h[0], e.f[0], e.se_max, static_cast<double>(g.condition), g.p, g.f0, g.p_u, g.fs, g.sigma,
+                  g.uncertainty, g.e_a, g.e_ext, g.chi2, g.chi2_limit, g.lo, g.hi, g.outside_bounds ? 1.0 : 0.0});
         const Fig7Quantity& q = quantities[e.quantity];
         std::string values;
         for (double f : e.f) values += (values.empty() ? "" : ", ") + fig7_number(f);
         const std::string label = e.series == "tracer" ? "core: share of its t = 0 material" : q.label;
         md << "| " << label << (std::string(q.unit) == "-" ? "" : " (" + std::string(q.unit) + ")") << " | " << series_text(e, a)
-           << " | " << values << " | " << cell(g.R, 3) << " | " << condition_text(e) << " | " << cell(g.p, 3) << " | "
-           << cell(g.f_ext) << " | " << cell(g.uncertainty, 3) << " | " << cell(g.lo) << " – " << cell(g.hi) << " | "
-           << cell(e.se, 2) << " |\n";
+           << " | " << values << " | " << cell(e.se_max, 3) << " | " << condition_text(e) << " | " << cell(g.p, 4) << " | "
+           << (std::isnan(g.fs) ? "–" : fig7_number(g.fs, 3) + " (" + fig7_number(g.p_u, 4) + ")") << " | " << cell(g.f0)
+           << " | " << cell(g.uncertainty, 4) << " | " << cell(g.e_a, 3) << " | " << cell(g.e_ext, 3) << " | " << flags_text(e)
+           << " |\n";
     }
     std::string cells, explicit_cells;
     for (int n : o.cells) cells += (cells.empty() ? "" : ", ") + std::to_string(n);
@@ -186,8 +188,10 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
        << (explicit_cells.empty() ? "none" : explicit_cells) << " (explicit), t_end = " << fig7_number(o.t_end)
        << " s, angle and layer averaged over t >= " << fig7_number(o.average_from)
        << " s, the other quantities at t_end (sampling error: their jitter over the last " << fig7_number(o.jitter_window)
-       << " s). GCI: Fs = 1.25 with three grids, 3 with two (order " << fig7_number(kFormalOrder)
-       << " assumed) and with three grids whose observed order is far from it.\n";
+       << " s). Least-squares fit over all grids weighted by the sampling errors (Eca & Hoekstra 2014); no order "
+       << "where the values agree with a constant within their sampling errors (chi^2, 95 %); Fs and p_u by Roy's rule "
+       << "against the formal order " << fig7_number(kFormalOrder) << " (Fs = 1.25 within 10 %, else 3); two grids: "
+       << "order " << fig7_number(kFormalOrder) << " assumed, Fs = 3.\n";
     write_file_atomically(o.data_dir + "/fig7_convergence.dat", conv.str());
     write_file_atomically(o.data_dir + "/fig7_convergence.md", md.str());
 }

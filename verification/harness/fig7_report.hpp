@@ -1,9 +1,9 @@
 // The analysis of the Fig. 7 study's runs (bench_fig7_convergence): for each Fig. 7 quantity and
-// each series of runs the convergence condition, observed order, extrapolated value and GCI
-// (harness/grid_convergence.hpp) with the sampling error next to it, and the tables and markdown
-// the benchmark writes.
+// each series of runs the convergence condition, the least-squares order, extrapolated value and
+// uncertainty (harness/grid_convergence.hpp) with the sampling errors weighing in, and the tables
+// and markdown the benchmark writes.
 //
-// Series (fine to coarse, the finest three when there are more):
+// Series (fine to coarse, all runs of the series):
 //   default   the default time stepping against h (three grids or more)
 //   explicit  the explicit time stepping against h (two grids: order 1 assumed, Fs = 3)
 //   dt        the default time stepping at one grid against the mean time step t_end/steps
@@ -19,17 +19,17 @@
 
 namespace granseg::verify {
 
-/// The order assumed for two grids: the formal order of the coupled scheme, first in space and
-/// time (donor cell, Lie splitting; docs/sect4.2_tumbler.md, "What to try next").
+/// The formal order of the coupled scheme for Roy's rule and for two grids: first in space and time
+/// (the bulk step's limited reconstruction falls to first order at extrema and walls, the
+/// segregation flux and the Lie splitting are first order; docs/sect4.2_tumbler.md).
 constexpr double kFormalOrder = 1.0;
 
 struct Fig7Estimate {
     int quantity = 0;
     std::string series;
-    std::vector<double> h, f;  // fine to coarse: cell size (m) or mean time step (s), value
+    std::vector<double> h, f, se;  // fine to coarse: cell size (m) or mean time step (s), value, sampling error
     GridConvergence g;
-    double se = 0;             // largest sampling error of the runs used
-    bool noise = false;        // a difference between neighbouring runs below twice se
+    double se_max = 0;             // largest sampling error of the runs used
 };
 
 struct Fig7Analysis {
@@ -43,7 +43,8 @@ struct Fig7Analysis {
     /// The finest default-mode grid run.
     const Fig7Result& finest() const;
     /// The best estimate of the h -> 0 value of `quantity` and its uncertainty: the default series'
-    /// extrapolation and GCI when monotone, else the finest run and the range rule (reference_note says which).
+    /// extrapolation when monotone and inside the physical range, else the finest run; the
+    /// uncertainty of the finest run (reference_note says which).
     double reference(int quantity) const;
     double reference_uncertainty(int quantity) const;
     std::string reference_note(int quantity) const;
@@ -57,6 +58,6 @@ Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& op
 void write_fig7_convergence(const Fig7Analysis& analysis, const Fig7Options& options);
 
 /// Formats a number with `digits` significant digits ("nan" for NaN).
-std::string fig7_number(double v, int digits = 4);
+std::string fig7_number(double v, int digits = 6);
 
 }  // namespace granseg::verify

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -112,15 +113,18 @@ std::string cell_name(const char* prefix, int cells) { return std::string(prefix
 }  // namespace
 
 const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities() {
+    // Ranges: an angle of repose between 0 and 90 deg, a thickness >= 0, the index (a standard
+    // deviation over its largest value) and the shares in [0, 1], a contrast of two Phi in [-1, 1].
+    constexpr double kInf = std::numeric_limits<double>::infinity();
     static const std::array<Fig7Quantity, kFig7Quantities> q{{
-        {"angle", "dynamic angle of repose", "deg", true, "angle_mean_deg", "surface_angle_deg", 1.0},
-        {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3},
-        {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0},
-        {"ring", "ring, small-particle share", "-", false, "ring", "ring", 1.0},
-        {"periphery", "periphery, small-particle share", "-", false, "periphery", "periphery", 1.0},
-        {"core", "core, small-particle share", "-", false, "core", "core", 1.0},
-        {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0},
-        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis", "axis", 1.0},
+        {"angle", "dynamic angle of repose", "deg", true, "angle_mean_deg", "surface_angle_deg", 1.0, 0.0, 90.0},
+        {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3, 0.0, kInf},
+        {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0, 0.0, 1.0},
+        {"ring", "ring, small-particle share", "-", false, "ring", "ring", 1.0, 0.0, 1.0},
+        {"periphery", "periphery, small-particle share", "-", false, "periphery", "periphery", 1.0, 0.0, 1.0},
+        {"core", "core, small-particle share", "-", false, "core", "core", 1.0, 0.0, 1.0},
+        {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0, -1.0, 1.0},
+        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis", "axis", 1.0, 0.0, 1.0},
     }};
     return q;
 }

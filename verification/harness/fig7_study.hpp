@@ -53,6 +53,7 @@ struct Fig7Quantity {
     const char* summary_column;
     const char* history_column;
     double scale;  // summary and history values times scale = the value in `unit`
+    double lower, upper;  // physical range (in `unit`): an extrapolation outside it is flagged
 };
 constexpr int kFig7Quantities = 8;
 const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities();

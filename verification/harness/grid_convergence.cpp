@@ -2,59 +2,97 @@
 
 #include "core/error.hpp"
 
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fit.h>
+#include <gsl/gsl_min.h>
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <utility>
+#include <memory>
 
 namespace granseg::verify {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// The fit's order is sought in [kMinOrder, kMaxOrder]: an order of 10 already makes every grid but
+// the coarsest equal to the limit to the digits a run prints; it stands for "faster than any".
+constexpr double kMaxOrder = 10.0;
+// The noise test's level: a constant is rejected when chi^2 exceeds its 95 % quantile.
+constexpr double kNoiseLevel = 0.95;
+// A sampling error of 0 (an exact value) still needs a finite weight: the round-off of a double
+// relative to the values' magnitude stands in for it (all exact: equal weights, the plain fit).
+constexpr double kRoundoff = 1e-13;
+// Roy's band for an observed order "in agreement" with the formal one, and the order limits.
+constexpr double kRoyBand = 0.1, kRoyMinOrder = 0.5, kFsClose = 1.25, kFsFar = 3.0;
 
-// The fixed-point iteration for p contracts by about |d q/d p| / ln r21, small when r21 and r32 are
-// close (refinement ratios within a few per cent of each other): 200 iterations reach round-off for
-// any ratio a grid study uses; a pair of ratios for which it does not converge is reported, not guessed.
-constexpr int kOrderIterations = 200;
-constexpr double kOrderTolerance = 1e-13;
+/// The weighted least-squares fit f = g0 + beta (h/h1)^p at a fixed order p (gsl_fit_wlinear).
+struct FixedFit {
+    double g0 = 0, beta = 0, chisq = 0;
+};
 
-/// The observed order of a monotone triple (Celik et al. 2008, eqs. 3-4, s = 1), NaN if the
-/// iteration does not settle.
-double observed_order(double e21, double e32, double r21, double r32) {
-    const double log_ratio = std::log(std::fabs(e32 / e21));
-    double p = log_ratio / std::log(r21);
-    for (int i = 0; i < kOrderIterations; ++i) {
-        const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));
-        const double next = std::fabs(log_ratio + q) / std::log(r21);
-        if (!std::isfinite(next)) return kNaN;
-        if (std::fabs(next - p) <= kOrderTolerance * (1.0 + next)) return next;
-        p = next;
+FixedFit fit_at(double p, const std::vector<double>& x_h, const std::vector<double>& w, const std::vector<double>& f) {
+    std::vector<double> x(x_h.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::pow(x_h[i], p);
+    FixedFit fit;
+    double c00, c01, c11;
+    gsl_fit_wlinear(x.data(), 1, w.data(), 1, f.data(), 1, x.size(), &fit.g0, &fit.beta, &c00, &c01, &c11, &fit.chisq);
+    return fit;
+}
+
+/// The order minimising the weighted residual of fit_at over [kMinOrder, kMaxOrder]: a scan on a
+/// logarithmic grid brackets the minimum, GSL's Brent minimiser refines it to round-off.
+double best_order(const std::vector<double>& x_h, const std::vector<double>& w, const std::vector<double>& f) {
+    constexpr int kScan = 240;
+    std::vector<double> p(kScan + 1), S(kScan + 1);
+    for (int k = 0; k <= kScan; ++k) {
+        p[k] = kMinOrder * std::pow(kMaxOrder / kMinOrder, static_cast<double>(k) / kScan);
+        S[k] = fit_at(p[k], x_h, w, f).chisq;
     }
-    return kNaN;
+    const int k = static_cast<int>(std::min_element(S.begin(), S.end()) - S.begin());
+    if (k == 0 || k == kScan || !(S[k] < S[k - 1] && S[k] < S[k + 1])) return p[k];
+    struct Data {
+        const std::vector<double> *x_h, *w, *f;
+    } data{&x_h, &w, &f};
+    gsl_function F;
+    F.function = [](double q, void* d) {
+        const Data& a = *static_cast<const Data*>(d);
+        return fit_at(q, *a.x_h, *a.w, *a.f).chisq;
+    };
+    F.params = &data;
+    std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent),
+                                                                             gsl_min_fminimizer_free);
+    gsl_min_fminimizer_set_with_values(m.get(), &F, p[k], S[k], p[k - 1], S[k - 1], p[k + 1], S[k + 1]);
+    for (int i = 0; i < 200; ++i) {
+        gsl_min_fminimizer_iterate(m.get());
+        const double a = gsl_min_fminimizer_x_lower(m.get()), b = gsl_min_fminimizer_x_upper(m.get());
+        if (gsl_min_test_interval(a, b, 1e-14, 1e-12) == GSL_SUCCESS) break;
+    }
+    return gsl_min_fminimizer_x_minimum(m.get());
 }
 
-/// The result for values that allow no extrapolation: their range, and the uncertainty `share` of it.
-GridConvergence range_only(Convergence condition, double R, double lo, double hi, double share) {
-    GridConvergence g;
-    g.condition = condition, g.R = R, g.p = kNaN, g.p_gci = kNaN, g.f_ext = kNaN, g.asymptotic = kNaN, g.fs = kNaN;
-    g.lo = lo, g.hi = hi, g.uncertainty = share * (hi - lo);
-    return g;
-}
-
-void require_grids(const double* h, const double* f, int n) {
-    for (int i = 0; i < n; ++i) {
+void require_grids(const std::vector<double>& h, const std::vector<double>& f, const std::vector<double>& se) {
+    if (h.size() < 2 || f.size() != h.size() || se.size() != h.size())
+        throw InputError("grid convergence: need two or more grids with one value and one sampling error each");
+    for (std::size_t i = 0; i < h.size(); ++i) {
         if (!(h[i] > 0.0) || !std::isfinite(h[i]) || (i > 0 && !(h[i] > h[i - 1])))
             throw InputError("grid convergence: cell sizes must be positive and increase from the finest grid");
         if (!std::isfinite(f[i])) throw InputError("grid convergence: a value is not finite");
+        if (se[i] < 0.0) throw InputError("grid convergence: a sampling error is negative");
     }
 }
 
-/// The GCI's order and factor of safety (first, second) for an observed order p and a factor Fs
-/// under the rule for an order far from the formal one (header); formal_order <= 0: (p, Fs).
-std::pair<double, double> gci_order(double p, double Fs, double formal_order) {
-    if (!(formal_order > 0.0) || (p >= 0.5 * formal_order && p <= 2.0 * formal_order)) return {p, Fs};
-    return {std::min(std::max(0.5, p), formal_order), 3.0};
+/// Neighbouring differences change sign (a zero difference changes nothing).
+bool sign_changes(const std::vector<double>& f) {
+    int sign = 0;
+    for (std::size_t i = 0; i + 1 < f.size(); ++i) {
+        const double d = f[i + 1] - f[i];
+        const int s = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
+        if (s != 0 && sign != 0 && s != sign) return true;
+        if (s != 0) sign = s;
+    }
+    return false;
 }
 
 }  // namespace
@@ -64,44 +102,73 @@ std::string convergence_name(Convergence c) {
         case Convergence::monotone: return "monotone";
         case Convergence::oscillatory: return "oscillatory";
         case Convergence::divergent: return "divergent";
-        case Convergence::undetermined: return "undetermined";
+        case Convergence::within_noise: return "within noise";
         case Convergence::two_grids: return "two grids";
+        case Convergence::undetermined: return "undetermined";
     }
     return "?";
 }
 
-GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f, double Fs,
-                                       double formal_order) {
-    require_grids(h.data(), f.data(), 3);
-    const double e21 = f[1] - f[0], e32 = f[2] - f[1];
-    const double lo = *std::min_element(f.begin(), f.end()), hi = *std::max_element(f.begin(), f.end());
-    if (e21 == 0.0 || e32 == 0.0) return range_only(Convergence::undetermined, e32 == 0.0 ? kNaN : 0.0, lo, hi, 1.0);
-    const double R = e21 / e32;
-    if (R < 0.0) return range_only(Convergence::oscillatory, R, lo, hi, 0.5);
-    if (R >= 1.0) return range_only(Convergence::divergent, R, lo, hi, 1.0);
-    const double r21 = h[1] / h[0], r32 = h[2] / h[1];
-    const double p = observed_order(e21, e32, r21, r32);
-    if (!std::isfinite(p)) return range_only(Convergence::undetermined, R, lo, hi, 1.0);
-    GridConvergence g;
-    const auto [q, fs] = gci_order(p, Fs, formal_order);
-    g.condition = Convergence::monotone, g.R = R, g.p = p, g.p_gci = q, g.lo = lo, g.hi = hi, g.fs = fs;
-    g.f_ext = f[0] - e21 / (std::pow(r21, p) - 1.0);
-    g.uncertainty = fs * std::fabs(e21) / (std::pow(r21, q) - 1.0);
-    const double gci32 = fs * std::fabs(e32) / (std::pow(r32, q) - 1.0);
-    g.asymptotic = gci32 / (std::pow(r21, q) * g.uncertainty);
-    return g;
+std::pair<double, double> roy_order_and_safety(double p, double pf) {
+    if (!(pf > 0.0)) throw InputError("grid convergence: the formal order must be positive");
+    if (std::fabs(p - pf) <= kRoyBand * pf) return {pf, kFsClose};
+    return {std::min(std::max(kRoyMinOrder, p), pf), kFsFar};
 }
 
-GridConvergence two_grid_convergence(const std::array<double, 2>& h, const std::array<double, 2>& f, double p,
-                                     double Fs) {
-    require_grids(h.data(), f.data(), 2);
-    if (!(p > 0.0)) throw InputError("grid convergence: the assumed order must be positive");
-    const double r = h[1] / h[0], e21 = f[1] - f[0];
+GridConvergence grid_convergence(const std::vector<double>& h, const std::vector<double>& f, const std::vector<double>& se_in,
+                                 double formal_order, Bounds bounds) {
+    std::vector<double> se(se_in);
+    for (double& s : se)
+        if (std::isnan(s)) s = 0.0;
+    require_grids(h, f, se);
+    if (!(formal_order > 0.0)) throw InputError("grid convergence: the formal order must be positive");
+    const std::size_t n = h.size();
     GridConvergence g;
-    g.condition = Convergence::two_grids, g.R = kNaN, g.p = p, g.p_gci = p, g.asymptotic = kNaN, g.fs = Fs;
-    g.lo = std::min(f[0], f[1]), g.hi = std::max(f[0], f[1]);
-    g.f_ext = f[0] - e21 / (std::pow(r, p) - 1.0);
-    g.uncertainty = Fs * std::fabs(e21) / (std::pow(r, p) - 1.0);
+    g.grids = static_cast<int>(n);
+    g.lo = *std::min_element(f.begin(), f.end()), g.hi = *std::max_element(f.begin(), f.end());
+    g.data_range = (g.hi - g.lo) / static_cast<double>(n - 1);
+    g.e_a = f[0] != 0.0 ? std::fabs((f[0] - f[1]) / f[0]) : kNaN;
+    g.p = g.f0 = g.p_u = g.fs = g.eps = g.sigma = g.e_ext = kNaN;
+
+    double scale = 0.0;
+    for (double v : f) scale = std::max(scale, std::fabs(v));
+    std::vector<double> w(n), x_h(n);
+    double sw = 0.0, swf = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = std::max(se[i], kRoundoff * std::max(scale, 1e-300));
+        w[i] = 1.0 / (s * s), x_h[i] = h[i] / h[0], sw += w[i], swf += w[i] * f[i];
+    }
+    g.chi2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) g.chi2 += w[i] * (f[i] - swf / sw) * (f[i] - swf / sw);
+    g.chi2_limit = gsl_cdf_chisq_Pinv(kNoiseLevel, static_cast<double>(n - 1));
+    if (g.chi2 <= g.chi2_limit) {
+        g.condition = Convergence::within_noise, g.uncertainty = g.hi - g.lo;
+        return g;
+    }
+    if (sign_changes(f)) {
+        g.condition = Convergence::oscillatory, g.uncertainty = 0.5 * (g.hi - g.lo);
+        return g;
+    }
+    if (n == 2) {
+        g.condition = Convergence::two_grids, g.p_u = formal_order, g.fs = kFsFar;
+    } else {
+        g.p = best_order(x_h, w, f);
+        if (g.p <= kMinOrder * (1.0 + 1e-9)) {
+            g.condition = Convergence::divergent, g.uncertainty = g.hi - g.lo, g.p = kNaN;
+            return g;
+        }
+        g.condition = Convergence::monotone;
+        std::tie(g.p_u, g.fs) = roy_order_and_safety(g.p, formal_order);
+    }
+    const FixedFit observed = fit_at(n == 2 ? formal_order : g.p, x_h, w, f), at_pu = fit_at(g.p_u, x_h, w, f);
+    g.f0 = observed.g0;
+    g.e_ext = g.f0 != 0.0 ? std::fabs((g.f0 - f[0]) / g.f0) : kNaN;
+    g.outside_bounds = g.f0 < bounds.lower || g.f0 > bounds.upper;
+    g.eps = at_pu.beta;
+    g.sigma = n > 2 ? std::sqrt(static_cast<double>(n) * at_pu.chisq / sw / static_cast<double>(n - 2)) : 0.0;
+    const double miss = std::fabs(f[0] - at_pu.g0 - at_pu.beta);
+    g.uncertainty = g.sigma < g.data_range ? g.fs * std::fabs(g.eps) + g.sigma + miss
+                                           : kFsFar * (g.sigma / g.data_range) * (std::fabs(g.eps) + g.sigma + miss);
     return g;
 }
 

@@ -1,58 +1,87 @@
-// Solution verification: how far a quantity computed on the finest of a few grids lies from the
-// same model's h -> 0 value (Roache's grid convergence index, GCI; the three-grid procedure of
-// Celik et al., J. Fluids Eng. 130:078001, 2008), restated in docs/sect4.2_tumbler.md,
-// section "Results".
+// Solution verification: how far a quantity computed on the finest of several grids lies from the
+// same model's h -> 0 value, restated in docs/sect4.2_tumbler.md, section "Results".
 //
-// Grids 1 (finest) to 3 (coarsest) with cell sizes h1 < h2 < h3, values f1, f2, f3,
-// e21 = f2 - f1, e32 = f3 - f2, r21 = h2/h1, r32 = h3/h2:
-//   convergence condition R = e21/e32: 0 < R < 1 monotone, R < 0 oscillatory, R >= 1 divergent,
-//                                     R = 0 or undefined (a difference exactly 0) undetermined;
-//   observed order p (monotone only): the p for which f = f_ext + C h^p passes through all three
-//     values, p = |ln|e32/e21| + q(p)| / ln r21 with q(p) = ln((r21^p - 1)/(r32^p - 1)), solved by
-//     fixed-point iteration (q = 0 for a constant ratio);
-//   Richardson extrapolation f_ext = f1 - e21/(r21^p - 1);
-//   GCI = Fs |e21|/(r21^p - 1), Fs = 1.25: here an absolute uncertainty of f1 (the relative form
-//     divides by f1, which for a share near 0 - the periphery - means nothing).
-// Not monotone: no extrapolation; the uncertainty is half the range of the three values when
-// oscillatory (Celik et al.) and the whole range when divergent or undetermined (our choice: a bound
-// that does not pretend to know the direction of the error).
-// Observed order far from the scheme's formal order pf (outside [pf/2, 2 pf]; given pf > 0): the
-// grids are not in the asymptotic range, and a GCI formed with that p would mean nothing (p = 9
-// makes it vanish). The GCI then takes p = min(max(1/2, p), pf) and Fs = 3 (Oberkampf & Roy,
-// Verification and Validation in Scientific Computing, Sect. 8.7); f_ext keeps the observed p.
-// Two grids: the order is assumed (the scheme's formal order) and Fs = 3.
+// Grids 1 (finest) to n (coarsest), cell sizes h1 < ... < hn, values f_i with sampling errors s_i
+// (the standard error of a time average, or the jitter of a value read at one instant):
+//
+//  1. Noise first: if the values agree with one constant within their sampling errors
+//     (chi^2 = sum (f_i - f_w)^2 / s_i^2 at or below its 95 % quantile with n - 1 degrees of
+//     freedom, f_w the weighted mean), the grids resolve no trend: no order is claimed
+//     ("within noise") and the uncertainty is the range of the values.
+//  2. Sign changes between neighbouring grids: "oscillatory", no order, half the range (Celik et
+//     al., J. Fluids Eng. 130:078001, 2008).
+//  3. Monotone: the least-squares fit f = f0 + alpha h^p over all grids (Eca & Hoekstra, "A
+//     procedure for the estimation of the numerical uncertainty of CFD calculations based on grid
+//     refinement studies", J. Comput. Phys. 262:104-130, 2014), each grid weighted by 1/s_i^2 so
+//     that a noisy run counts less. p at or below kMinOrder: "divergent" (the differences do not
+//     shrink), the whole range.
+//  4. The uncertainty's order and factor of safety, Roy's rule (C. J. Roy, "Review of
+//     discretization error estimators in scientific computing", AIAA 2010-126; Oberkampf & Roy,
+//     Verification and Validation in Scientific Computing, 2010, Sect. 8.7):
+//       |p - pf| / pf <= 0.1:  Fs = 1.25 with p_u = pf;
+//       otherwise:             Fs = 3    with p_u = min(max(0.5, p), pf).
+//     Two grids: p_u = pf, Fs = 3 (Roache's rule for an assumed order).
+//  5. The uncertainty of f1 in Eca & Hoekstra's form, with the fit at the fixed order p_u
+//     (f = g0 + beta h^p_u, least squares, same weights): its error estimate eps = beta h1^p_u,
+//     its standard deviation sigma (n - 2 degrees of freedom; 0 for two grids) and its miss at h1,
+//     d1 = |f1 - g0 - eps|:
+//       sigma <  Delta:  U = Fs |eps| + sigma + d1,
+//       sigma >= Delta:  U = 3 (sigma / Delta) (|eps| + sigma + d1)   (the fit is poor),
+//     with the data range Delta = (max f - min f)/(n - 1). For three grids with a constant ratio
+//     and p_u = p this is Roache's GCI, Fs |e21|/(r^p - 1).
+// Reported besides: f0 (the extrapolated value, observed order), e_a = |(f1 - f2)/f1| and
+// e_ext = |(f0 - f1)/f0| (relative; NaN where the denominator is 0), and whether f0 lies outside
+// the quantity's physical range (a share below 0, a thickness below 0): the fit is then used
+// outside its range, and its f0 must not be read as a limit.
 #pragma once
 
-#include <array>
+#include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace granseg::verify {
 
-enum class Convergence { monotone, oscillatory, divergent, undetermined, two_grids };
+/// The conditions of the header; `undetermined` is for callers whose runs allow no study (the
+/// abscissae do not increase, or a value is undefined).
+enum class Convergence { monotone, oscillatory, divergent, within_noise, two_grids, undetermined };
 
-/// "monotone", "oscillatory", "divergent", "undetermined", "two grids".
+/// "monotone", "oscillatory", "divergent", "within noise", "two grids", "undetermined".
 std::string convergence_name(Convergence c);
 
-struct GridConvergence {
-    Convergence condition = Convergence::undetermined;
-    double R = 0;           // e21/e32 (NaN with two grids or a zero e32)
-    double p = 0;           // observed order (monotone), the assumed one (two grids), else NaN
-    double p_gci = 0;       // order the GCI is formed with (p, or the limited one above), else NaN
-    double f_ext = 0;       // Richardson-extrapolated value (monotone or two grids), else NaN
-    double uncertainty = 0; // absolute: the GCI (monotone, two grids) or the range rule above
-    double asymptotic = 0;  // GCI_32 / (r21^p GCI_21): 1 in the asymptotic range (monotone), else NaN
-    double lo = 0, hi = 0;  // smallest and largest of the values
-    double fs = 0;          // factor of safety used (NaN where no GCI is formed)
+/// Smallest observed order the fit resolves; at or below it the series is called divergent.
+constexpr double kMinOrder = 0.05;
+
+/// Roy's rule (header, step 4): the order p_u and factor of safety Fs of the uncertainty for an
+/// observed order p and the formal order pf > 0.
+std::pair<double, double> roy_order_and_safety(double p, double pf);
+
+/// The physical range of a quantity (an extrapolated value outside it is flagged).
+struct Bounds {
+    double lower = -std::numeric_limits<double>::infinity();
+    double upper = std::numeric_limits<double>::infinity();
 };
 
-/// Three grids: h fine to coarse (h[0] < h[1] < h[2], all > 0), f the values on them; Fs the factor
-/// of safety; formal_order > 0 applies the rule for an observed order far from it (above), 0 does
-/// not. InputError for cell sizes not strictly increasing and positive or a non-finite value.
-GridConvergence three_grid_convergence(const std::array<double, 3>& h, const std::array<double, 3>& f,
-                                       double Fs = 1.25, double formal_order = 0.0);
+struct GridConvergence {
+    Convergence condition = Convergence::within_noise;
+    int grids = 0;
+    double chi2 = 0, chi2_limit = 0;  // the noise test: chi^2 of a constant and its 95 % quantile
+    double p = 0;                     // observed order of the fit (monotone), else NaN
+    double f0 = 0;                    // extrapolated value f(h -> 0) (monotone, two grids), else NaN
+    double p_u = 0, fs = 0;           // order and factor of safety of U (NaN where none is formed)
+    double eps = 0;                   // error estimate of f1 at the order p_u (NaN where none)
+    double sigma = 0;                 // standard deviation of the fit at p_u (NaN where none)
+    double data_range = 0;            // (max - min)/(n - 1)
+    double uncertainty = 0;           // absolute, of f1 (the band f1 +- U)
+    double e_a = 0, e_ext = 0;        // relative change f1 -> f2, relative distance f1 -> f0
+    double lo = 0, hi = 0;            // smallest and largest value
+    bool outside_bounds = false;      // f0 outside the quantity's physical range
+};
 
-/// Two grids (h[0] < h[1]) with the assumed order p: f_ext = f1 - e21/(r^p - 1), GCI = Fs |e21|/(r^p - 1).
-GridConvergence two_grid_convergence(const std::array<double, 2>& h, const std::array<double, 2>& f, double p,
-                                     double Fs = 3.0);
+/// The procedure of the header. h fine to coarse (strictly increasing, > 0), f and se (sampling
+/// errors >= 0, NaN read as 0) of the same length >= 2, the scheme's formal order pf > 0.
+/// InputError for sizes not increasing, a non-finite value, or mismatched lengths.
+GridConvergence grid_convergence(const std::vector<double>& h, const std::vector<double>& f, const std::vector<double>& se,
+                                 double formal_order, Bounds bounds = {});
 
 }  // namespace granseg::verify
