@@ -1,13 +1,15 @@
 # The Fig. 7 quantities against the cell size h (solution verification of the paper's drum): each
-# run with its sampling error, both time-stepping modes; the band f1 +- U (where the h -> 0 value
+# run with its sampling error, both transports (and the explicit mode if run); the band f1 +- U (where the h -> 0 value
 # lies) from the finest run to h = 0 and the least-squares limit f0 at h = 0; the dt_max
-# study's runs (halved, doubled) beside the finest grid.
+# study's runs (dt_max times factors below 1) beside the coarsest and the finest grid.
 # needs: bench_fig7_convergence
 # reads: fig7_runs.dat fig7_convergence.dat
 # Data: fig7_runs.dat (kind explicit cells h_mm dt_factor dt_mean_ms steps wall_s cpu_s, then per
-#       quantity value and _se: angle layer index ring periphery core contrast axis from column 10);
+#       quantity value and _se: angle layer index ring periphery core contrast axis from column 10,
+#       then transport (0 the reference, 1 the second, -1 explicit) dt_max_ms dt_max_share);
 #       fig7_convergence.dat (quantity series runs x1 f1 se_max condition p f0 p_u fs sigma U e_a e_ext
-#       chi2 chi2_95 lo hi outside; series 0 default, 1 explicit, 2 dt, 3 tracer).
+#       chi2 chi2_95 lo hi outside; series 0 the reference transport, 1 explicit, 2 dt at the finest
+#       grid, 3 tracer, 4 the second transport, 5 dt at the coarsest grid).
 # Usage (from the Makefile): gnuplot -e "benchdir='build/bench-data'; outfile='x.png'" figures/bench_fig7_convergence.gp
 runs = benchdir.'/fig7_runs.dat'
 conv = benchdir.'/fig7_convergence.dat'
@@ -19,7 +21,7 @@ array names[8] = ["dynamic angle of repose [deg]", "flowing-layer thickness [mm]
 cond(c) = c == 0 ? "monotone" : c == 1 ? "oscillatory" : c == 2 ? "divergent" : c == 3 ? "within noise" : c == 4 ? "two grids" : "undetermined"
 stats runs u 4 nooutput
 hmax = 1.15 * STATS_max
-set multiplot layout 3,3 title "Fig. 7 quantities against the cell size h. Blue circles: default time stepping; red squares: explicit; green triangles: default with dt_max halved (left) and doubled (right)\nbars: sampling error; shaded: the finest run's value +- its uncertainty U (blue: least-squares fit over all grids, Fs by Roy's rule; red: two grids, Fs 3, order 1 assumed); diamonds at h = 0: extrapolated limits"
+set multiplot layout 3,3 title "Fig. 7 quantities against the cell size h. Blue circles: the reference transport (first of --transports); orange: the second; red squares: explicit; green: the reference with dt_max times factors below 1 (left of its grid); dt ~ h on every grid\nbars: sampling error; shaded: the finest run's value +- its uncertainty U (least-squares fit over all grids, Fs by Roy's rule; red: two grids, Fs 3, order 1 assumed); diamonds at h = 0: extrapolated limits"
 set grid
 set xrange [0:hmax]
 set xlabel "h [mm]"
@@ -30,14 +32,17 @@ do for [q = 0:7] {
     c = STATS_max
     p = 0
     if (c == 0) { stats conv u (($1 == q && $2 == 0) ? $8 : 1/0) nooutput; p = STATS_max }
-    set title sprintf("%s\ndefault: %s%s", names[q+1], cond(c), c == 0 ? sprintf(", p = %.2f", p) : "")
+    set title sprintf("%s\nreference: %s%s", names[q+1], cond(c), c == 0 ? sprintf(", p = %.2f", p) : "")
     v = 10 + 2*q
-    plot conv u (($1 == q && $2 == 0) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#1f77b4" t "default: f1 +- U", \
+    plot conv u (($1 == q && $2 == 0) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#1f77b4" t "reference: f1 +- U", \
+         conv u (($1 == q && $2 == 4) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#ff7f0e" t "second transport: f1 +- U", \
          conv u (($1 == q && $2 == 1) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#d62728" t "explicit: f1 +- U (Fs 3)", \
-         runs u (($1 == 0 && $2 == 0) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 7 lc rgb "#1f77b4" t "default", \
+         runs u (($1 == 0 && $2 == 0 && $26 == 0) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 7 lc rgb "#1f77b4" t "reference transport", \
+         runs u (($1 == 0 && $2 == 0 && $26 == 1) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 9 lc rgb "#ff7f0e" t "second transport", \
          runs u (($1 == 0 && $2 == 1) ? $4 : 1/0):v:(column(v+1)) w yerrorlines lw 2 pt 5 lc rgb "#d62728" t "explicit", \
-         runs u (($1 == 1) ? $4 * ($5 < 1 ? 0.96 : 1.04) : 1/0):v:(column(v+1)) w yerrorbars pt 9 ps 1.3 lc rgb "#2ca02c" t "default, dt_max x 0.5 (left), x 2", \
-         conv u (($1 == q && $2 == 0) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#1f77b4" t "default: extrapolated", \
+         runs u (($1 == 1) ? $4 * (1 - 0.08 * (1 - $5)) : 1/0):v:(column(v+1)) w yerrorbars pt 11 ps 1.3 lc rgb "#2ca02c" t "dt study", \
+         conv u (($1 == q && $2 == 0) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#1f77b4" t "reference: limit", \
+         conv u (($1 == q && $2 == 4) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#ff7f0e" t "second transport: limit", \
          conv u (($1 == q && $2 == 1) ? 0 : 1/0):9 w p pt 12 ps 2 lc rgb "#d62728" t "explicit: extrapolated (p = 1)"
 }
 set title "passive tracer (S = 0) started in the core:\nshare of the core's material at t_end that started there"

@@ -1,7 +1,7 @@
 // The coupled drum's pieces on small grids: the bulk step written like the mass balance (a uniform
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
-// repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, and a
-// drum of one phase only.
+// repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, a passive
+// tracer riding in a segregating drum, and a drum of one phase only.
 #include "flow/bed.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
@@ -129,6 +129,40 @@ BOOST_AUTO_TEST_CASE(either_transport_keeps_both_phases_and_the_bounds_while_seg
     double differ = 0.0;
     for (std::size_t c = 0; c < phi_of[0].size(); ++c) differ = std::max(differ, std::fabs(phi_of[0][c] - phi_of[1][c]));
     BOOST_TEST(differ > 1e-6);
+}
+
+// A passive tracer in the full model (S = 1, packing feedback): it does not act on the flow or on
+// phi (both bitwise those of the same drum without it), keeps its amount to round-off and
+// 0 <= tau <= Phi, and a tracer filling the whole drum (tau = Phi) stays tau = Phi: the bulk step
+// carries a uniform share exactly.
+BOOST_AUTO_TEST_CASE(a_passive_tracer_rides_without_acting) {
+    CoupledTumblerSetup plain;
+    plain.drum.cells_per_diameter = 26;
+    CoupledTumblerSetup marked = plain, full = plain;
+    marked.tracer0 = [](double x, double z) { return std::hypot(x, z) < 0.015 ? 1.0 : 0.0; };
+    full.tracer0 = [](double, double) { return 1.0; };
+    CoupledTumbler a(plain), b(marked), c(full);
+    const Grid& g = b.grid();
+    const double tracer0 = total_amount(g, b.tracer());
+    BOOST_TEST(tracer0 > 0.0);
+    BOOST_TEST(a.tracer().empty());
+    double below = 0.0, above = 0.0;
+    long not_full = 0;
+    for (int n = 0; n < 200; ++n) {
+        a.step(), b.step(), c.step();
+        for (std::size_t i = 0; i < g.cells(); ++i) {
+            if (!g.is_inside(i)) continue;
+            below = std::max(below, -b.tracer()[i]);
+            above = std::max(above, b.tracer()[i] - b.flow().Phi()[i]);
+        }
+    }
+    for (std::size_t i = 0; i < g.cells(); ++i) not_full += g.is_inside(i) && c.tracer()[i] != c.flow().Phi()[i];
+    BOOST_TEST(below <= 0.0);
+    BOOST_TEST(above <= 0.0);
+    BOOST_TEST(total_amount(g, b.tracer()) == tracer0, tt::tolerance(1e-13));
+    BOOST_TEST(not_full == 0);
+    BOOST_TEST((a.phi() == b.phi()));
+    BOOST_TEST((a.flow().Phi() == b.flow().Phi()));
 }
 
 BOOST_AUTO_TEST_CASE(a_drum_of_small_particles_only_runs_with_an_empty_phase) {

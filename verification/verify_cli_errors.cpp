@@ -159,6 +159,8 @@ std::vector<Case> cli_cases(const fs::path& out) {
                   coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
         bad_scene("tumbler, phi_hat < 0 at the bottom", "[initial] phi_hat:",
                   coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"),
+        bad_scene("tumbler, a tracer share above 1 in the core", "[initial] tracer:",
+                  coupled + "[initial]\ntracer = \"sqrt(x^2 + z^2) < 0.01 ? 2 : 0\"\n"),
         bad_scene("tumbler, S < 0", "[segregation] S:", coupled + "[segregation]\nS = -1\n"),
         bad_scene("tumbler, unknown key", "[coupling] feedback:", coupled + "[coupling]\nfeedback = true\n"),
         bad_scene("tumbler, a fixed mixture with packing feedback", "[coupling] mixture:",

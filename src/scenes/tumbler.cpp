@@ -58,6 +58,10 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     }
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     s.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
+    if (scene.has("initial", "tracer")) {
+        const Expression tracer = scene.expression("initial", "tracer", {"x", "z"});
+        s.tracer0 = [tracer](double x, double z) { return tracer({x, z}); };
+    }
 
     // Cross-key conditions on the initial bed: phi_hat0 in [0, 1] wherever the drum holds material,
     // and (packing feedback) the bed below Phi_rcp(phi_hat0) in every cell, which building the
@@ -69,6 +73,10 @@ TumblerScene read_tumbler(const SceneFile& scene) {
         if (fill[b.c] > 0.0 && !(v >= 0.0 && v <= 1.0))
             scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
                        "0 <= phi_hat <= 1 wherever the drum holds material");
+        const double tau = s.tracer0 ? s.tracer0(b.x, b.z) : 0.0;
+        if (!(tau >= 0.0 && tau <= 1.0))
+            scene.fail("initial", "tracer", "tracer = " + format_number(tau) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+                       "0 <= tracer <= 1 in the drum");
     });
     try {
         const CoupledTumbler probe(s);

@@ -7,11 +7,14 @@
 #include "flow/flow_output.hpp"
 #include "segregation/invariants.hpp"
 #include "tumbler/coupled_tables.hpp"
+#include "tumbler/layer_regions.hpp"
+#include "tumbler/material_points.hpp"
 #include "tumbler/packing_contrast.hpp"
 #include "tumbler/tumbler_run.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace granseg {
 
@@ -56,7 +59,9 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
 
     DataTable history({"t", "steps", "mass_small", "mass_large", "segregation_index", "surface_angle_deg", "ring",
                        "periphery", "core", "mass_small_change", "mass_large_change", "flowing_fraction", "max_speed",
-                       "substeps", "dt", "layer_thickness", "axis", "packing_contrast"});
+                       "substeps", "dt", "layer_thickness", "axis", "packing_contrast", "r_core_layer", "core_layer",
+                       "ring_layer", "periphery_layer", "axis_layer", "tracer_core_layer",
+                       "points_core_layer"});
     history.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
                     "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
@@ -64,12 +69,22 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) +
                     " m/s; layer_thickness: area of the flowing bed over the surface's chord (m); axis: small-particle "
                     "share within " + format_number(kAxisShare) + " D of the axis; packing_contrast: Fig. 7d "
-                    "(packing_contrast.hpp)");
+                    "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
+                    "layer's thickness (its mean over t >= angle_from once there, else the present one), cells weighted by "
+                    "their exact area inside each region; tracer_core_layer: the passive tracer's share tau/Phi of the core "
+                    "(NaN without a tracer); points_core_layer: of the material points (four per bed cell at t = 0, carried "
+                    "through the velocity relative to the drum, material_points.hpp) within the core, the share that "
+                    "started where the tracer's share is >= 1/2 (NaN without a tracer)");
     PackingContrastOptions contrast_options;
     contrast_options.bed_level = level, contrast_options.v_flow = v_flow, contrast_options.bin = drum.diameter / 20;
     TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
     BoundsMonitor bounds;
     double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
+    const LayerRegions own_regions(grid, drum.surface_height(), drum.radius(), kAxisShare * drum.diameter);
+    LayerRegionShares own;
+    double tracer_core = NAN, points_core = NAN;
+    std::optional<MaterialPoints> points;
+    if (tumbler.setup().tracer0) points.emplace(grid, flow.Phi(), level, tumbler.setup().tracer0);
     PatternMetrics metrics;
     PackingContrast contrast;
     int snapshot = 0, frame = 0;
@@ -97,10 +112,15 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
             metrics = pattern_metrics(grid, tumbler.phi(), flow.Phi(), options.regions, hat0);
             axis = disc_share(grid, tumbler.phi(), flow.Phi(), kAxisShare * drum.diameter, level);
             contrast = packing_contrast(tumbler, surface_angle, contrast_options);
+            const double delta = layer.samples() > 0 ? layer.mean() : thickness;
+            own = own_regions.shares(tumbler.phi(), flow.Phi(), delta, level);
+            if (!tumbler.tracer().empty()) tracer_core = own_regions.shares(tumbler.tracer(), flow.Phi(), delta, level).core;
+            if (points) points_core = points->marked_share_within(own.r_core);
             history.row({flow.time(), static_cast<double>(flow.steps()), amount[0], amount[1], metrics.index, surface_angle,
                          metrics.ring, metrics.periphery, metrics.core, small_change, large_change, d.flowing_fraction,
                          d.max_speed, static_cast<double>(tumbler.segregation_substeps()), flow.last_dt(), thickness, axis,
-                         contrast.contrast});
+                         contrast.contrast, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core,
+                         points_core});
         }
         if (options.run.vtk && due(next_snapshot)) {
             next_snapshot += options.run.snapshot_every;
@@ -114,7 +134,8 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     sample();
     Progress progress("tumbler", t_end);
     while (flow.time() < t_end) {
-        tumbler.step(t_end);
+        const double dt = tumbler.step(t_end);
+        if (points) points->advance(flow.u(0), flow.u(2), dt);
         if (observer) observer(tumbler);
         sample();
         progress.update(flow.time());
@@ -134,8 +155,12 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                                tumbler.timers().flow, tumbler.timers().bulk, tumbler.timers().segregation, tumbler.timers().feedback,
                                static_cast<double>(grid.inside_cells())};
     append_flow_work(flow, columns, values);
-    for (const char* c : {"layer_mean", "layer_std", "axis"}) columns.push_back(c);
-    for (double v : {layer.mean(), layer.std_dev(), axis}) values.push_back(v);
+    for (const char* c : {"layer_mean", "layer_std", "axis", "r_core_layer", "core_layer", "ring_layer", "periphery_layer", "axis_layer",
+                          "tracer_core_layer", "points_core_layer"})
+        columns.push_back(c);
+    for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core,
+                      points_core})
+        values.push_back(v);
     append_run_time(cost, columns, values);
     DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
@@ -143,7 +168,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     format_number(options.regions.r_ring) + ", r_periphery " + format_number(options.regions.r_periphery) +
                     " m); layer: mean and standard deviation of the flowing layer's thickness (m) over the angle's "
                     "samples; axis: small-particle share within " + format_number(kAxisShare) +
-                    " D of the axis at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
+                    " D of the axis at t_end; *_layer: as history.dat at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
                     " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
                     "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
     summary.row(values);

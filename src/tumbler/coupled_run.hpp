@@ -47,7 +47,7 @@ using CoupledStepObserver = std::function<void(const CoupledTumbler& tumbler)>;
 
 /// Runs `tumbler` from t = 0 to options.run.t_end and returns its files: history.dat, summary.dat
 /// (the angle and the flowing layer's thickness averaged over t >= angle_from, the pattern metrics,
-/// axis share and Fig. 7d contrast at t_end),
+/// axis share, the drum's own regions (layer_regions.hpp) and Fig. 7d contrast at t_end),
 /// initial_lab.dat and fields_lab.dat (coupled_field_table at t = 0 and t_end), frames/frame_NNN.dat,
 /// vtk/tumbler_NNNN.vtk.
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,

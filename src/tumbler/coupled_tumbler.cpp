@@ -76,6 +76,20 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
                                : drum_bed_at_rest(setup.drum, g, setup.material, initial_.mean, setup.flow.T_floor);
     phi_.assign(g.cells(), 0.0);
     for (std::size_t c = 0; c < g.cells(); ++c) phi_[c] = initial_.phi_hat[c] * Phi0[c];
+    if (setup.tracer0) {
+        tracer_.assign(g.cells(), 0.0);
+        for (int k = 0; k < g.n[2]; ++k)
+            for (int j = 0; j < g.n[1]; ++j)
+                for (int i = 0; i < g.n[0]; ++i) {
+                    const std::size_t c = g.index(i, j, k);
+                    if (!g.is_inside(c)) continue;
+                    const double x = g.center(0, i), z = g.center(2, k), v = setup.tracer0(x, z);
+                    if (!(v >= 0.0 && v <= 1.0))
+                        throw InputError("tumbler: initial tracer = " + format_number(v) + " at x = " + format_number(x) +
+                                         ", z = " + format_number(z) + " outside [0, 1]");
+                    tracer_[c] = v * Phi0[c];
+                }
+    }
     if (setup.packing_feedback) flow_.set_phi_hat(initial_.phi_hat);  // before set_state, which checks Phi < Phi_rcp
     const std::vector<double> zero(g.cells(), 0.0), T(g.cells(), setup.flow.T_floor);
     flow_.set_state(Phi0, {zero, zero, zero}, T);
@@ -102,10 +116,9 @@ double CoupledTumbler::step(double t_end) {
     const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)
     auto t1 = clock::now();
     timers_.flow += seconds(t0, t1);
-    const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
-    bulk_courant_ += fct_ ? fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, phi_, setup_.Phi_min)
-                          : bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, phi_, setup_.Phi_min);  // 2. (eq. 65, F^bulk)
-    clip_bulk_round_off();
+    bulk_courant_ += transport(phi_, dt);  // 2. (eq. 65, F^bulk)
+    clip_bulk_round_off(phi_, "phi");
+    if (!tracer_.empty()) transport(tracer_, dt), clip_bulk_round_off(tracer_, "the tracer");  // 2'.
     t0 = clock::now();
     timers_.bulk += seconds(t1, t0);
     since_segregation_ += dt;  // (assumption C1)
@@ -118,11 +131,17 @@ double CoupledTumbler::step(double t_end) {
     return dt;
 }
 
-void CoupledTumbler::clip_bulk_round_off() {
+double CoupledTumbler::transport(std::vector<double>& field, double dt) {
+    const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
+    return fct_ ? fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, field, setup_.Phi_min)
+                : bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, field, setup_.Phi_min);
+}
+
+void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char* name) {
     const std::size_t cells = grid().cells();
     const unsigned char* in = inside_.data();
     const double *Phi = flow_.Phi().data(), *before = flow_.Phi_before().data();
-    double* phi = phi_.data();
+    double* phi = field.data();
     // The donor-cell step keeps phi_hat in [0, 1] exactly, and so does the limited antidiffusion;
     // their rounding is a few ulps of the amounts that pass through a cell: relative to the cell's
     // larger Phi (before or after the step).
@@ -138,12 +157,12 @@ void CoupledTumbler::clip_bulk_round_off() {
     }
     max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);
     if (nonfinite > 0)
-        throw InvariantError("tumbler: non-finite phi after the bulk step at t = " + format_number(time()) + " (" +
+        throw InvariantError(std::string("tumbler: non-finite ") + name + " after the bulk step at t = " + format_number(time()) + " (" +
                              std::to_string(nonfinite) + " cells)");
     if (!(excess > 0.0 || lowest < 0.0)) return;
     if (worst > 1.0)
-        throw InvariantError("tumbler: the bulk step left 0 <= phi <= Phi by more than round-off (max phi - Phi " +
-                             format_number(excess, 3) + ", min phi " + format_number(lowest, 3) + ") at t = " +
+        throw InvariantError(std::string("tumbler: the bulk step left 0 <= ") + name + " <= Phi by more than round-off (max excess " +
+                             format_number(excess, 3) + ", min " + format_number(lowest, 3) + ") at t = " +
                              format_number(time()) + " s");
     for (std::size_t c = 0; c < cells; ++c) {
         if (!in[c]) continue;

@@ -26,6 +26,9 @@
 //      (assumption C2). SegregationSolver::advance (split over the axes, the sign-robust flux of
 //      eq. 63, zero flux on every wall face) covers the time since the last sub-step in steps of
 //      its own CFL bound;
+//   2'. a passive tracer, if the setup has one: a second bulk field tau (0 <= tau <= Phi) carried by
+//      the same M with the same transport as phi, and nothing else (no segregation, no feedback):
+//      a dye that marks material, so that what leaves a region is measured in the model's own flow;
 //   4. closures from phi_hat: with packing feedback, Phi_rcp(phi_hat) and Phi_co(phi_hat) follow
 //      phi_hat cell by cell (FlowSolver::set_phi_hat; eqs. 18, 19); without, they keep the values
 //      of the initial mixture (assumption C3).
@@ -70,6 +73,8 @@ struct CoupledTumblerSetup {
     /// initial bed's mean (C3). Lets a tracer (S = 0) ride on the flow of another mixture.
     double mixture = std::numeric_limits<double>::quiet_NaN();
     std::function<double(double x, double z)> phi_hat0 = [](double, double) { return 0.5; };  // lab frame at t = 0
+    /// A passive tracer's share tau/Phi at t = 0 (lab frame, in [0, 1]); empty: no tracer (step 2').
+    std::function<double(double x, double z)> tracer0;
 };
 
 /// Wall-clock seconds spent in the parts of the coupled step (for benchmarks).
@@ -100,6 +105,8 @@ public:
     const std::vector<double>& phi() const { return phi_; }
     /// phi_hat = phi/Phi per cell (0 where Phi = 0).
     std::vector<double> phi_hat() const;
+    /// The passive tracer tau per cell (a volume fraction like phi; empty without a tracer).
+    const std::vector<double>& tracer() const { return tracer_; }
     /// The small-particle share that sets Phi_rcp, Phi_co without packing feedback (C3): the setup's
     /// mixture if given, else the initial bed's mean.
     double initial_mixture() const { return initial_.mean; }
@@ -112,7 +119,7 @@ public:
     /// Largest amount the segregation solver's round-off guard moved phi back into [0, Phi].
     double largest_correction() const { return segregation_.largest_correction(); }
     /// Over all bulk steps so far: the extremes of phi - Phi and of phi before the round-off clip,
-    /// and the largest clip.
+    /// and the largest clip (of phi and of the tracer).
     double max_excess() const { return max_excess_; }
     double min_phi() const { return min_phi_; }
     double largest_bulk_clip() const { return largest_bulk_clip_; }
@@ -123,9 +130,12 @@ private:
     void update_segregation_velocity();
     /// Step 3 over the time since the last sub-step.
     void segregate();
-    /// After the bulk step: phi back into [0, Phi] where rounding left it; InvariantError if by more
-    /// than kBoundRoundOff times the cell's larger Phi (before or after the step).
-    void clip_bulk_round_off();
+    /// After the bulk step: `field` (phi or the tracer) back into [0, Phi] where rounding left it;
+    /// InvariantError if by more than kBoundRoundOff times the cell's larger Phi (before or after).
+    void clip_bulk_round_off(std::vector<double>& field, const char* name);
+    /// Step 2 for `field` with the flow's face mass fluxes: the share of a segregating cell's
+    /// material moved (BulkTransport::step).
+    double transport(std::vector<double>& field, double dt);
 
     /// phi_hat0 at the cells below the flat initial surface (0 elsewhere) and their mean (C3), or the
     /// setup's mixture in its place if given.
@@ -146,7 +156,7 @@ private:
     bool parallel_;                      // OpenMP threads on the per-cell loops of larger grids
     FrozenFields frozen_;
     std::array<std::vector<double>, 3> d_s_;
-    std::vector<double> phi_;
+    std::vector<double> phi_, tracer_;
     double since_segregation_ = 0.0;  // time since the last segregation sub-step
     double segregation_step_ = 0.0;   // the segregation's CFL step at the last sub-step
     double bulk_courant_ = 0.0;       // largest share of a segregating cell's material moved since then

@@ -1,25 +1,28 @@
 // Solution verification of the paper's drum (Fig. 7, verification/scenes/tumbler.toml):
 // how much of each Fig. 7 quantity is the model and how much the grid and the time step.
 //
-//   1. runs (harness/fig7_study.hpp): the coupled drum with the default time stepping at each
-//      --cells (constant refinement ratio about sqrt 2: 50, 71, 100; add 141 if affordable), the
-//      explicit one at each --explicit-cells, dt_max halved and doubled at --dt-cells, a passive
-//      tracer in the core at each --cells, the model and the tracer at a lower T_floor;
+//   1. runs (harness/fig7_study.hpp): the coupled drum with each --transports at each --cells
+//      (50, 70, 100, 140: ratios near sqrt 2, even counts), dt_max proportional to h so that it
+//      sets the steps on every grid; the explicit time stepping at each --explicit-cells; the dt
+//      study at the coarsest and the finest grid (dt_max times factors below 1); a passive tracer
+//      in the core at each --cells, the model and the tracer at a lower T_floor;
 //   2. per quantity (angle of repose, flowing-layer thickness, segregation index, ring, periphery,
 //      core, Fig. 7d contrast, small-particle share within 0.05 D of the axis) and series: the
-//      convergence condition, observed order, Richardson extrapolation and GCI
-//      (harness/grid_convergence.hpp) with the sampling error next to it (fig7_report.hpp);
-//   3. work against error: wall time against |value - extrapolated|, and the cheapest run for a
+//      convergence condition, least-squares order, limit and uncertainty with the sampling errors
+//      weighing in (harness/grid_convergence.hpp, fig7_report.hpp);
+//   3. work against error: wall time against |value - reference|, and the cheapest run for a
 //      quick look, a figure and a paper (fig7_work.hpp);
-//   4. the paper's statements as checks on the finest run, bounds widened by their GCI, and the
-//      core's mechanisms (fig7_core.hpp): the one check table of this program.
+//   4. the paper's statements as checks on the finest run, bounds widened by their uncertainty,
+//      the share of steps dt_max set in every run, and the core's mechanisms (fig7_core.hpp): the
+//      one check table of this program.
 // Writes to DIR: fig7_runs.dat, fig7_convergence.dat/.md, fig7_work.dat/.md, fig7_core.md (the
 // .md files are ready for docs/generated/), and every run under fig7_convergence/ (its scene
 // NAME.toml and its files NAME/); figures/bench_fig7_convergence.gp and bench_fig7_work.gp plot them.
 //
 // Run: build/bench/bench_fig7_convergence [--data DIR] [options]    (--help lists them)
-//   the default is the real study, long (see README.md); a test of everything in about two minutes:
-//   --cells 25,35,50 --explicit-cells 25,35 --t-end 4 --average-from 2 --jitter-window 1
+//   the default is the real study, long (see docs/sect4.2_tumbler.md, "Results"); a test of
+//   everything in a few minutes:
+//   --cells 26,36,50,70 --transports muscl --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
 #include "flow/flow_settings.hpp"
 #include "harness/fig7_core.hpp"
@@ -34,6 +37,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -72,22 +76,55 @@ std::vector<int> cell_list(const std::string& option, const std::string& text) {
     return cells;
 }
 
+/// "0.5,0.25" -> {0.5, 0.25}; "" or "none" -> {}; each factor in (0, 1) (dt_max keeps binding).
+std::vector<double> factor_list(const std::string& option, const std::string& text) {
+    std::vector<double> factors;
+    if (text.empty() || text == "none") return factors;
+    std::istringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const double f = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !(f > 0.0 && f < 1.0)) bad_option(option, "\"" + text + "\"", "comma-separated factors in (0, 1), or none");
+        factors.push_back(f);
+    }
+    return factors;
+}
+
+/// "muscl,donor-cell" -> the transports, each one of [flow] transport's names, no repeats.
+std::vector<std::string> transport_list(const std::string& text) {
+    const std::vector<std::string> names = choice_names(kTransports);
+    std::string allowed;
+    for (const std::string& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        if (std::find(names.begin(), names.end(), item) == names.end() || std::find(out.begin(), out.end(), item) != out.end())
+            bad_option("transports", "\"" + text + "\"", "comma-separated, each once: " + allowed);
+        out.push_back(item);
+    }
+    if (out.empty()) bad_option("transports", "\"" + text + "\"", "one or more of " + allowed);
+    return out;
+}
+
 Fig7Options parse(int argc, char** argv) {
     Fig7Options o;
-    std::string cells = "50,71,100", explicit_cells = "50,71";
+    std::string cells = "50,70,100,140", explicit_cells = "none", transports = "muscl,donor-cell", dt_coarse = "0.5,0.25",
+                dt_fine = "0.5";
     po::options_description d("bench_fig7_convergence: solution verification of the paper's drum (Fig. 7)");
     d.add_options()("help", "this list")("data", po::value(&o.data_dir)->default_value(o.data_dir), "output directory")(
-        "cells", po::value(&cells)->default_value(cells), "default time stepping: cells per diameter, coarse to fine (3 or more)")(
+        "cells", po::value(&cells)->default_value(cells), "cells per diameter of the grid series, coarse to fine (3 or more)")(
+        "transports", po::value(&transports)->default_value(transports), "[flow] transport of each grid series; the first is the reference")(
         "explicit-cells", po::value(&explicit_cells)->default_value(explicit_cells), "explicit time stepping (none, or 2 or more)")(
-        "dt-cells", po::value(&o.dt_cells)->default_value(0), "grid of the dt_max study, one of --cells (0: the finest)")(
-        "no-dt-study", "skip the dt_max study")("no-core-study", "skip the tracer and T_floor runs (check d)")(
+        "dt-ref", po::value(&o.dt_ref)->default_value(o.dt_ref), "s, dt_max at 50 cells per diameter; every run takes dt_ref 50/cells")(
+        "dt-coarse", po::value(&dt_coarse)->default_value(dt_coarse), "dt_max factors of the dt study at the coarsest grid")(
+        "dt-fine", po::value(&dt_fine)->default_value(dt_fine), "dt_max factors of the dt study at the finest grid")(
+        "no-dt-study", "skip the dt study")("no-core-study", "skip the tracer and T_floor runs (check d)")(
         "t-end", po::value(&o.t_end)->default_value(o.t_end), "s, length of every run")(
         "average-from", po::value(&o.average_from)->default_value(o.average_from), "s, start of the angle's and layer's averages")(
         "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
         "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs")(
         "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
         "lanes", po::value(&o.lanes)->default_value(o.lanes), "runs side by side, one thread each (0: one per core)")(
-        "transport", po::value(&o.transport)->default_value(o.transport), "[flow] transport of the default-stepping runs (\"\": the scene's)")(
         "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
     po::variables_map vm;
     try {
@@ -99,11 +136,14 @@ Fig7Options parse(int argc, char** argv) {
     }
     if (vm.count("help")) std::cout << d << "\n", std::exit(0);
     o.cells = cell_list("cells", cells), o.explicit_cells = cell_list("explicit-cells", explicit_cells);
+    o.transports = transport_list(transports);
+    o.dt_coarse = factor_list("dt-coarse", dt_coarse), o.dt_fine = factor_list("dt-fine", dt_fine);
     o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study"), o.reuse = vm.count("reuse") > 0;
     if (o.cells.size() < 3) bad_option("cells", "\"" + cells + "\" has fewer than three grids", "three or more");
     if (o.explicit_cells.size() == 1) bad_option("explicit-cells", "one grid", "none, or two or more");
-    if (o.dt_cells != 0 && std::find(o.cells.begin(), o.cells.end(), o.dt_cells) == o.cells.end())
-        bad_option("dt-cells", std::to_string(o.dt_cells), "0 or one of --cells");
+    if (o.dt_study && (o.dt_coarse.empty() || o.dt_fine.empty()))
+        bad_option("dt-coarse", "no dt factor at one end", "one or more factors at each end, or --no-dt-study");
+    if (!(o.dt_ref > 0.0 && o.dt_ref <= 0.1)) bad_option("dt-ref", fig7_number(o.dt_ref), "0 < dt_ref <= 0.1 s");
     if (!(o.t_end > 0.0 && o.t_end <= 1000.0)) bad_option("t-end", fig7_number(o.t_end), "0 < t_end <= 1000");
     if (!(o.average_from >= 0.0 && o.average_from < o.t_end))
         bad_option("average-from", fig7_number(o.average_from), "0 <= average_from < t_end");
@@ -114,9 +154,6 @@ Fig7Options parse(int argc, char** argv) {
     if (o.lanes == 0) o.lanes = o.threads == 1 ? verify::machine_cores() : 1;
     if (o.lanes < 1 || o.lanes > 256 || (o.lanes > 1 && o.threads != 1))
         bad_option("lanes", std::to_string(o.lanes), "0..256, and 1 unless --threads 1");
-    const std::vector<std::string> transports = choice_names(kTransports);
-    if (!o.transport.empty() && std::find(transports.begin(), transports.end(), o.transport) == transports.end())
-        bad_option("transport", "\"" + o.transport + "\"", "\"\", " + transports[0] + ", " + transports[1]);
     return o;
 }
 

@@ -6,6 +6,8 @@
 //   b. "large particles at the wall":    periphery + U <= the initial mixture
 //   c. Fig. 7d, denser mixed regions:    (contrast - U) / spread >= 2 (the criterion of verify_tumbler e)
 //   d. "a mainly untouched core":        the tracer's retained share - U >= 1/2
+//   e. untouched near the axis:          axis share - U <= the initial mixture (one-sided)
+// and first that dt_max set at least 99 % of every run's steps (dt ~ h, fig7_study.hpp).
 // The core's change C(h1) - m0 (m0 the initial mixture) is split into
 //   discretisation  C(h1) - C_ext (established only where the default series is monotone and its
 //                   limit inside [0, 1]),

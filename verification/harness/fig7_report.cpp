@@ -12,12 +12,15 @@ namespace granseg::verify {
 
 namespace {
 
-const char* const kSeries[] = {"default", "explicit", "dt", "tracer"};
-
-int series_code(const std::string& s) {
-    for (int i = 0; i < 4; ++i)
-        if (s == kSeries[i]) return i;
-    return -1;
+// Series codes of fig7_convergence.dat (the figure scripts read them): the reference transport's
+// grid series, explicit, dt at the finest grid, tracer, the second transport's grid series, dt at
+// the coarsest grid.
+int series_code(const std::string& s, const Fig7Analysis& a) {
+    if (s == a.reference_series) return 0;
+    const char* const fixed[] = {"", "explicit", "dt finest", "tracer", "", "dt coarsest", "points"};
+    for (int i = 1; i < 7; ++i)
+        if (s == fixed[i]) return i;
+    return 4;
 }
 
 /// Runs that allow no study (abscissae that do not increase: a dt study whose step bounds held
@@ -38,9 +41,12 @@ Fig7Estimate estimate(int q, const std::string& series, const std::vector<const 
     Fig7Estimate e;
     e.quantity = q, e.series = series;
     for (const Fig7Result* r : runs) {
+        // The points series: the material points' retained share in place of the core quantity.
+        const bool points = series == "points";
+        const double f = points ? r->points : r->value[q], se = points ? r->points_sampling : r->sampling[q];
         e.h.push_back(dt_axis ? r->dt_mean : r->h);
-        e.f.push_back(r->value[q]), e.se.push_back(r->sampling[q]);
-        if (std::isfinite(r->sampling[q])) e.se_max = std::max(e.se_max, r->sampling[q]);
+        e.f.push_back(f), e.se.push_back(se);
+        if (std::isfinite(se)) e.se_max = std::max(e.se_max, se);
     }
     const bool increasing = std::is_sorted(e.h.begin(), e.h.end()) && std::adjacent_find(e.h.begin(), e.h.end()) == e.h.end();
     const bool defined = std::all_of(e.f.begin(), e.f.end(), [](double v) { return std::isfinite(v); });
@@ -65,9 +71,54 @@ std::string flags_text(const Fig7Estimate& e) {
 }
 
 std::string series_text(const Fig7Estimate& e, const Fig7Analysis& a) {
-    if (e.series == "dt") return "default, dt_max x 0.5 / 1 / 2 at " + std::to_string(a.runs(Fig7Kind::dt, false)[0]->run.cells) + " cells";
-    if (e.series == "tracer") return "tracer in the core (S = 0)";
-    return e.series + " time stepping";
+    if (e.series == "tracer") return "tracer in the core (full model)";
+    if (e.series == "points") return "material points in the core (no numerical diffusion)";
+    if (e.series == "explicit") return "explicit time stepping";
+    if (e.series.rfind("dt ", 0) == 0) {
+        const int n = e.series == "dt finest" ? a.finest().run.cells : a.runs(Fig7Kind::grid, false, a.reference_series).back()->run.cells;
+        std::string factors;
+        for (const Fig7Result* r : a.dt_runs(n)) factors += (factors.empty() ? "" : " / ") + fig7_number(r->run.dt_factor);
+        return a.reference_series + ", dt x " + factors + " at " + std::to_string(n) + " cells";
+    }
+    return e.series + ", dt ~ h";
+}
+
+/// The verdict on a quantity from its reference series.
+std::string verdict(const Fig7Estimate& e) {
+    const GridConvergence& g = e.g;
+    switch (g.condition) {
+        case Convergence::monotone:
+            return g.outside_bounds ? "limit outside the physical range: not established"
+                                    : "converges (p = " + fig7_number(g.p, 3) + "), limit " + fig7_number(g.f0);
+        case Convergence::within_noise: return "grid differences within the sampling errors: no trend resolved";
+        case Convergence::two_grids: return "two grids: order assumed";
+        default: return convergence_name(g.condition) + ": range " + fig7_number(g.lo) + " – " + fig7_number(g.hi);
+    }
+}
+
+/// DIR/fig7_summary.md: per quantity the value at the paper's grid (100 cells per diameter, or the
+/// finest), the limit, the band of the finest run and the verdict (the full table:
+/// fig7_convergence.md).
+void write_fig7_summary(const Fig7Analysis& a, const Fig7Options& o) {
+    constexpr int kPaperCells = 100;
+    const auto grid = a.runs(Fig7Kind::grid, false, a.reference_series);
+    const auto paper = std::find_if(grid.begin(), grid.end(), [](const Fig7Result* r) { return r->run.cells == kPaperCells; });
+    const Fig7Result& shown = paper != grid.end() ? **paper : a.finest();
+    std::ostringstream md;
+    md << "| quantity | at " << shown.run.cells << " cells | limit | band of the " << a.finest().run.cells
+       << "-cell value | verdict |\n|---|---|---|---|---|\n";
+    for (int q = 0; q < kFig7Quantities; ++q) {
+        const Fig7Quantity& quantity = fig7_quantities()[q];
+        const Fig7Estimate& e = *a.find(q, a.reference_series);
+        const bool limit = e.g.condition == Convergence::monotone && !e.g.outside_bounds;
+        md << "| " << quantity.label << (std::string(quantity.unit) == "-" ? "" : " (" + std::string(quantity.unit) + ")") << " | "
+           << fig7_number(shown.value[q]) << " ± " << fig7_number(shown.sampling[q], 2) << " | " << (limit ? fig7_number(e.g.f0) : "–")
+           << " | " << fig7_number(a.band(q), 3) << " | " << verdict(e) << " |\n";
+    }
+    md << "\nWritten by `bench_fig7_convergence`: the " << a.reference_series << " transport, dt_max " << fig7_number(1e3 * o.dt_ref)
+       << " ms × 50/cells; ± after a value: its sampling error; band: the reference series' uncertainty plus the time-step "
+          "study's at the finest grid. Every series and number: `fig7_convergence.md`.\n";
+    write_file_atomically(o.data_dir + "/fig7_summary.md", md.str());
 }
 
 }  // namespace
@@ -85,54 +136,50 @@ const Fig7Estimate* Fig7Analysis::find(int quantity, const std::string& series) 
     return nullptr;
 }
 
-std::vector<const Fig7Result*> Fig7Analysis::runs(Fig7Kind kind, bool explicit_steps) const {
+std::vector<const Fig7Result*> Fig7Analysis::runs(Fig7Kind kind, bool explicit_steps, const std::string& transport) const {
     std::vector<const Fig7Result*> out;
     for (const Fig7Result& r : results)
-        if (r.run.kind == kind && r.run.explicit_steps == explicit_steps) out.push_back(&r);
-    std::sort(out.begin(), out.end(), [&](const Fig7Result* a, const Fig7Result* b) {
-        return kind == Fig7Kind::dt ? a->run.dt_factor < b->run.dt_factor : a->run.cells > b->run.cells;
-    });
+        if (r.run.kind == kind && r.run.explicit_steps == explicit_steps && (transport.empty() || r.run.transport == transport))
+            out.push_back(&r);
+    std::sort(out.begin(), out.end(), [&](const Fig7Result* a, const Fig7Result* b) { return a->run.cells > b->run.cells; });
     return out;
 }
 
-const Fig7Result& Fig7Analysis::finest() const { return *runs(Fig7Kind::grid, false).front(); }
-
-namespace {
-bool extrapolated(const Fig7Estimate& e) { return e.g.condition == Convergence::monotone && !e.g.outside_bounds; }
-}  // namespace
-
-double Fig7Analysis::reference(int q) const {
-    const Fig7Estimate* e = find(q, "default");
-    return extrapolated(*e) ? e->g.f0 : e->f[0];
+std::vector<const Fig7Result*> Fig7Analysis::dt_runs(int cells) const {
+    std::vector<const Fig7Result*> out;
+    for (const Fig7Result& r : results)
+        if ((r.run.kind == Fig7Kind::dt || (r.run.kind == Fig7Kind::grid && r.run.transport == reference_series)) && r.run.cells == cells)
+            out.push_back(&r);
+    std::sort(out.begin(), out.end(), [](const Fig7Result* a, const Fig7Result* b) { return a->run.dt_factor < b->run.dt_factor; });
+    return out;
 }
 
-double Fig7Analysis::reference_uncertainty(int q) const { return find(q, "default")->g.uncertainty; }
+const Fig7Result& Fig7Analysis::finest() const { return *runs(Fig7Kind::grid, false, reference_series).front(); }
 
-std::string Fig7Analysis::reference_note(int q) const {
-    return extrapolated(*find(q, "default"))
-               ? "the default series' extrapolated value"
-               : "the finest default run (" + convergence_name(find(q, "default")->g.condition) + ": no extrapolation)";
+const Fig7Result& Fig7Analysis::reference_run() const { return *dt_runs(finest().run.cells).front(); }
+
+double Fig7Analysis::band(int q) const {
+    const Fig7Estimate* dt = find(q, "dt finest");
+    return find(q, reference_series)->g.uncertainty + (dt ? dt->g.uncertainty : 0.0);
 }
 
 Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o) {
     Fig7Analysis a;
     a.results = std::move(results);
-    const auto grid_default = a.runs(Fig7Kind::grid, false), grid_explicit = a.runs(Fig7Kind::grid, true);
-    std::vector<const Fig7Result*> dt;
-    if (o.dt_study) {
-        const auto changed = a.runs(Fig7Kind::dt, false);  // dt_max x 0.5, x 2
-        const int n = changed[0]->run.cells;
-        const auto middle = std::find_if(grid_default.begin(), grid_default.end(), [&](const Fig7Result* r) { return r->run.cells == n; });
-        dt = {changed[0], *middle, changed[1]};
-    }
+    a.reference_series = o.transports.front();
+    const auto grid_explicit = a.runs(Fig7Kind::grid, true);
     for (int q = 0; q < kFig7Quantities; ++q) {
-        a.estimates.push_back(estimate(q, "default", grid_default, false));
+        for (const std::string& t : o.transports) a.estimates.push_back(estimate(q, t, a.runs(Fig7Kind::grid, false, t), false));
         if (grid_explicit.size() >= 2) a.estimates.push_back(estimate(q, "explicit", grid_explicit, false));
-        if (!dt.empty()) a.estimates.push_back(estimate(q, "dt", dt, true));
+        if (o.dt_study) {
+            a.estimates.push_back(estimate(q, "dt coarsest", a.dt_runs(o.cells.front()), true));
+            a.estimates.push_back(estimate(q, "dt finest", a.dt_runs(o.cells.back()), true));
+        }
     }
     const auto tracer = a.runs(Fig7Kind::tracer, false);
     const int core = 5;  // fig7_quantities(): the core's share, for the tracer its retained share
     if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "tracer", tracer, false));
+    if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "points", tracer, false));
     return a;
 }
 
@@ -140,10 +187,11 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     const auto& quantities = fig7_quantities();
     std::vector<std::string> columns{"kind", "explicit", "cells", "h_mm", "dt_factor", "dt_mean_ms", "steps", "wall_s", "cpu_s"};
     for (const Fig7Quantity& q : quantities) columns.push_back(q.name), columns.push_back(std::string(q.name) + "_se");
+    for (const char* c : {"transport", "dt_max_ms", "dt_max_share"}) columns.push_back(c);
     DataTable runs(columns);
     runs.comment("bench_fig7_convergence: one row per run; kind 0 grid, 1 dt, 2 tracer, 3 floor (T_floor " +
-                 fig7_number(o.T_floor_low) + "), 4 tracer at that floor; explicit 1 for the explicit time stepping; "
-                 "dt_mean = t_end/steps; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
+                 fig7_number(o.T_floor_low) + ", the model with the tracer); tracer runs: the core columns hold the tracer's retained share; explicit 1 for the explicit time stepping; "
+                 "dt_mean = t_end/steps; transport: index in --transports (-1 explicit); dt_max_share: share of the steps whose dt dt_max set; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
                  "and its sampling error (_se: standard error of the time average over t >= " + fig7_number(o.average_from) +
                  " s, or the jitter over the last " + fig7_number(o.jitter_window) + " s of a value at t_end = " +
                  fig7_number(o.t_end) + " s)");
@@ -151,14 +199,18 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
         std::vector<double> row{static_cast<double>(r.run.kind), r.run.explicit_steps ? 1.0 : 0.0, static_cast<double>(r.run.cells),
                                 1e3 * r.h, r.run.dt_factor, 1e3 * r.dt_mean, r.steps, r.wall, r.cpu};
         for (int q = 0; q < kFig7Quantities; ++q) row.push_back(r.value[q]), row.push_back(r.sampling[q]);
+        const auto t = std::find(o.transports.begin(), o.transports.end(), r.run.transport);
+        row.push_back(r.run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin()));
+        row.push_back(1e3 * r.run.dt_max), row.push_back(r.dt_max_share);
         runs.row(row);
     }
     write_file_atomically(o.data_dir + "/fig7_runs.dat", runs.str());
 
     DataTable conv({"quantity", "series", "runs", "x1", "f1", "se_max", "condition", "p", "f0", "p_u", "fs", "sigma", "U",
                     "e_a", "e_ext", "chi2", "chi2_95", "lo", "hi", "outside"});
-    conv.comment("bench_fig7_convergence: quantity 0..7 = angle layer index ring periphery core contrast axis; series 0 default "
-                 "(h), 1 explicit (h), 2 dt (default, mean dt), 3 tracer (core); x1 = finest h (mm) or dt (ms); condition 0 "
+    conv.comment("bench_fig7_convergence: quantity 0..7 = angle layer index ring periphery core contrast axis; series 0 the "
+                 "reference transport (h), 1 explicit (h), 2 dt at the finest grid (mean dt), 3 tracer (core), 4 the second "
+                 "transport (h), 5 dt at the coarsest grid, 6 material points (core); x1 = finest h (mm) or dt (ms); condition 0 "
                  "monotone, 1 oscillatory, 2 divergent, 3 within noise, 4 two grids, 5 undetermined; p, f0: least-squares "
                  "fit f = f0 + alpha h^p weighted by 1/se^2; p_u, fs: Roy's order and factor of safety; sigma: standard "
                  "deviation of the fit at p_u; U: uncertainty of f1 (harness/grid_convergence.hpp); e_a = |f1 - f2|/|f1|, "
@@ -168,13 +220,13 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
           "U of the finest | e_a | e_ext | flag |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Estimate& e : a.estimates) {
         const GridConvergence& g = e.g;
-        conv.row({static_cast<double>(e.quantity), static_cast<double>(series_code(e.series)), static_cast<double>(e.f.size()),
+        conv.row({static_cast<double>(e.quantity), static_cast<double>(series_code(e.series, a)), static_cast<double>(e.f.size()),
                   1e3 * e.h[0], e.f[0], e.se_max, static_cast<double>(g.condition), g.p, g.f0, g.p_u, g.fs, g.sigma,
                   g.uncertainty, g.e_a, g.e_ext, g.chi2, g.chi2_limit, g.lo, g.hi, g.outside_bounds ? 1.0 : 0.0});
         const Fig7Quantity& q = quantities[e.quantity];
         std::string values;
         for (double f : e.f) values += (values.empty() ? "" : ", ") + fig7_number(f);
-        const std::string label = e.series == "tracer" ? "core: share of its t = 0 material" : q.label;
+        const std::string label = e.series == "tracer" || e.series == "points" ? "core: share of its t = 0 material" : q.label;
         md << "| " << label << (std::string(q.unit) == "-" ? "" : " (" + std::string(q.unit) + ")") << " | " << series_text(e, a)
            << " | " << values << " | " << cell(e.se_max, 3) << " | " << condition_text(e) << " | " << cell(g.p, 4) << " | "
            << (std::isnan(g.fs) ? "–" : fig7_number(g.fs, 3) + " (" + fig7_number(g.p_u, 4) + ")") << " | " << cell(g.f0)
@@ -194,6 +246,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
        << "order " << fig7_number(kFormalOrder) << " assumed, Fs = 3.\n";
     write_file_atomically(o.data_dir + "/fig7_convergence.dat", conv.str());
     write_file_atomically(o.data_dir + "/fig7_convergence.md", md.str());
+    write_fig7_summary(a, o);
 }
 
 }  // namespace granseg::verify

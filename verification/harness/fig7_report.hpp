@@ -4,11 +4,12 @@
 // and markdown the benchmark writes.
 //
 // Series (fine to coarse, all runs of the series):
-//   default   the default time stepping against h (three grids or more)
-//   explicit  the explicit time stepping against h (two grids: order 1 assumed, Fs = 3)
-//   dt        the default time stepping at one grid against the mean time step t_end/steps
-//             (dt_max halved, as in the scene, doubled)
-//   tracer    the passive tracer's core share (the core quantity only) against h
+//   TRANSPORT    each --transports' grid series against h, dt ~ h (three grids or more); the
+//                first is the reference series
+//   explicit     the explicit time stepping against h (two grids: order 1 assumed, Fs = 3)
+//   dt coarsest  the reference transport at the coarsest grid against the mean time step
+//   dt finest    t_end/steps, dt_max times the factors and 1 (the grid run)
+//   tracer       the passive tracer's core share (the core quantity only) against h
 #pragma once
 
 #include "harness/fig7_study.hpp"
@@ -35,19 +36,22 @@ struct Fig7Estimate {
 struct Fig7Analysis {
     std::vector<Fig7Result> results;
     std::vector<Fig7Estimate> estimates;
+    std::string reference_series;  // the first transport
 
     /// The estimate of `quantity` in `series`, or nullptr if the study has no such series.
     const Fig7Estimate* find(int quantity, const std::string& series) const;
-    /// The runs of one kind and time stepping, fine to coarse (dt runs: dt_max 0.5, 1, 2 times).
-    std::vector<const Fig7Result*> runs(Fig7Kind kind, bool explicit_steps) const;
-    /// The finest default-mode grid run.
+    /// The runs of one kind and time stepping (and transport, unless empty), fine to coarse.
+    std::vector<const Fig7Result*> runs(Fig7Kind kind, bool explicit_steps, const std::string& transport = "") const;
+    /// The dt study at one grid: its dt runs and the reference transport's grid run, smallest dt first.
+    std::vector<const Fig7Result*> dt_runs(int cells) const;
+    /// The finest grid run of the reference transport.
     const Fig7Result& finest() const;
-    /// The best estimate of the h -> 0 value of `quantity` and its uncertainty: the default series'
-    /// extrapolation when monotone and inside the physical range, else the finest run; the
-    /// uncertainty of the finest run (reference_note says which).
-    double reference(int quantity) const;
-    double reference_uncertainty(int quantity) const;
-    std::string reference_note(int quantity) const;
+    /// The reference of the work-against-error table: the finest grid's run with the smallest dt
+    /// (the dt study's, or the grid run without one).
+    const Fig7Result& reference_run() const;
+    /// The band of the finest grid run's value of `quantity`: the reference series' uncertainty
+    /// plus the dt study's at the finest grid (where the study has one).
+    double band(int quantity) const;
 };
 
 /// The estimates of every quantity in every series the runs allow.

@@ -2,13 +2,10 @@
 
 #include "core/error.hpp"
 #include "core/output.hpp"
-#include "core/scene_file.hpp"
-#include "flow/flow_settings.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
 #include "harness/time_series.hpp"
 #include "scenes/scene_kind.hpp"
-#include "scenes/tumbler.hpp"
 #include "tumbler/drum.hpp"
 
 #include <omp.h>
@@ -23,15 +20,14 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace granseg::verify {
 
 namespace {
 
 constexpr const char* kScene = "verification/scenes/tumbler.toml";
-// The tracer rides on the closures of the paper's perfectly mixed start (phi_hat = 0.5), the
-// mixture of the full model's initial bed: the flow it sees is the flow of tumbler-flow.
-constexpr double kTracerMixture = 0.5;
 
 /// A data file's columns by name (from its first line) and rows; "nan" and "inf" read as such.
 struct NamedTable {
@@ -72,8 +68,10 @@ std::string file_text(const std::string& path) {
     return s.str();
 }
 
-bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::tracer_floor; }
-bool is_floor(Fig7Kind k) { return k == Fig7Kind::floor || k == Fig7Kind::tracer_floor; }
+bool is_tracer(Fig7Kind k) { return k == Fig7Kind::tracer || k == Fig7Kind::floor; }
+
+/// NAME_nCELLS, a run's name.
+std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
 
 /// The scene text of `run`: the paper's scene with the run's keys changed.
 std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
@@ -88,27 +86,31 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     r.insert_or_assign("frames", 0), r.insert_or_assign("vtk", false);
     toml::table& flow = section("flow");
     if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
-    else if (!o.transport.empty()) flow.insert_or_assign("transport", o.transport);
-    if (run.dt_factor != 1.0) {
-        const double dt_max = flow["dt_max"].value_or(FlowSettings{}.dt_max);
-        flow.insert_or_assign("dt_max", run.dt_factor * dt_max);
-    }
-    if (is_floor(run.kind)) flow.insert_or_assign("T_floor", o.T_floor_low);
+    else flow.insert_or_assign("transport", run.transport);
+    flow.insert_or_assign("dt_max", run.dt_max);
+    if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (is_tracer(run.kind)) {
-        const double r_core = read_tumbler(SceneFile::load(kScene)).run.regions.r_core;
+        // The tracer fills the drum's own core at that grid: r < d - layer, the layer measured by
+        // the reference transport's grid run of the same cells (run before the tracer runs).
+        const std::string grid_run = o.data_dir + "/fig7_convergence/" + cell_name(o.transports.front().c_str(), run.cells);
+        const NamedTable grid_summary = read_named(grid_run + "/summary.dat");
+        const double r_core = grid_summary.at(grid_summary.last(), "r_core_layer");
         char expression[96];
         std::snprintf(expression, sizeof expression, "sqrt(x^2 + z^2) < %.17g ? 1 : 0", r_core);
-        section("segregation").insert_or_assign("S", 0.0);
-        section("initial").insert_or_assign("phi_hat", std::string(expression));
-        toml::table& coupling = section("coupling");
-        coupling.insert_or_assign("packing_feedback", false), coupling.insert_or_assign("mixture", kTracerMixture);
+        section("initial").insert_or_assign("tracer", std::string(expression));
     }
     std::ostringstream text;
     text << "# bench_fig7_convergence: " << kScene << " as run " << run.name << "\n" << scene << "\n";
     return text.str();
 }
 
-std::string cell_name(const char* prefix, int cells) { return std::string(prefix) + "_n" + std::to_string(cells); }
+
+/// A dt factor in a run's name: 0.5 -> "0.5", 0.25 -> "0.25".
+std::string fig7_factor(double f) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", f);
+    return s;
+}
 
 }  // namespace
 
@@ -120,11 +122,11 @@ const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities() {
         {"angle", "dynamic angle of repose", "deg", true, "angle_mean_deg", "surface_angle_deg", 1.0, 0.0, 90.0},
         {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3, 0.0, kInf},
         {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0, 0.0, 1.0},
-        {"ring", "ring, small-particle share", "-", false, "ring", "ring", 1.0, 0.0, 1.0},
-        {"periphery", "periphery, small-particle share", "-", false, "periphery", "periphery", 1.0, 0.0, 1.0},
-        {"core", "core, small-particle share", "-", false, "core", "core", 1.0, 0.0, 1.0},
+        {"ring", "ring (d - layer <= r < d), small-particle share", "-", false, "ring_layer", "ring_layer", 1.0, 0.0, 1.0},
+        {"periphery", "periphery (r >= 0.8 R), small-particle share", "-", false, "periphery_layer", "periphery_layer", 1.0, 0.0, 1.0},
+        {"core", "core (r < d - layer), small-particle share", "-", false, "core_layer", "core_layer", 1.0, 0.0, 1.0},
         {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0, -1.0, 1.0},
-        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis", "axis", 1.0, 0.0, 1.0},
+        {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis_layer", "axis_layer", 1.0, 0.0, 1.0},
     }};
     return q;
 }
@@ -135,18 +137,24 @@ double fig7_scene_number(const char* section, const char* key, double fallback) 
 
 std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
     std::vector<Fig7Run> runs;
-    for (int n : o.cells) runs.push_back({cell_name("default", n), Fig7Kind::grid, false, n, 1.0});
-    for (int n : o.explicit_cells) runs.push_back({cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0});
-    const int finest = o.cells.back();
+    const std::string& first = o.transports.front();
+    const auto add = [&](const std::string& name, Fig7Kind kind, bool explicit_steps, int n, double factor, const std::string& transport) {
+        runs.push_back({name, kind, explicit_steps, n, factor, transport, o.dt_max(n, factor)});
+    };
+    for (const std::string& t : o.transports)
+        for (int n : o.cells) add(cell_name(t.c_str(), n), Fig7Kind::grid, false, n, 1.0, t);
+    for (int n : o.explicit_cells) add(cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0, "");
+    const int coarsest = o.cells.front(), finest = o.cells.back();
     if (o.dt_study) {
-        const int n = o.dt_cells > 0 ? o.dt_cells : finest;
-        runs.push_back({cell_name("default", n) + "_dt0.5", Fig7Kind::dt, false, n, 0.5});
-        runs.push_back({cell_name("default", n) + "_dt2", Fig7Kind::dt, false, n, 2.0});
+        for (double f : o.dt_coarse) add(cell_name(first.c_str(), coarsest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, coarsest, f, first);
+        for (double f : o.dt_fine) add(cell_name(first.c_str(), finest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, finest, f, first);
     }
     if (o.core_study) {
-        for (int n : o.cells) runs.push_back({cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0});
-        runs.push_back({cell_name("floor", finest), Fig7Kind::floor, false, finest, 1.0});
-        runs.push_back({cell_name("tracer_floor", finest), Fig7Kind::tracer_floor, false, finest, 1.0});
+        for (int n : o.cells) add(cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0, first);
+        // At the second-finest grid: the floor's part is a difference of two runs at one grid, and
+        // the finest grid would double the study's cost.
+        const int n = o.cells[o.cells.size() - 2];
+        add(cell_name("floor", n), Fig7Kind::floor, false, n, 1.0, first);
     }
     return runs;
 }
@@ -178,21 +186,33 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     const NamedTable summary = read_named(dir + "/summary.dat"), history = read_named(dir + "/history.dat");
     const std::vector<double>& s = summary.last();
     r.steps = summary.at(s, "steps");
+    r.dt_max_share = summary.at(s, "steps_dt_max") / r.steps;
     r.dt_mean = summary.at(s, "t_end") / r.steps;
     r.h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / run.cells;
     r.initial_mixture = summary.at(s, "initial_mixture"), r.packing_spread = summary.at(s, "packing_spread");
     const double t_end = summary.at(s, "t_end");
-    for (int i = 0; i < kFig7Quantities; ++i) {
-        const Fig7Quantity& q = fig7_quantities()[i];
-        r.value[i] = q.scale * summary.at(s, q.summary_column);
+    // A value and its sampling error: the standard error of its time average over t >= average_from,
+    // or its jitter over the last jitter_window before t_end.
+    const auto read = [&](const char* summary_column, const char* history_column, double scale, bool time_average) {
         std::vector<double> t, v;
         for (const std::vector<double>& row : history.rows) {
-            const double ti = history.at(row, "t"), vi = history.at(row, q.history_column);
-            const bool in_window = q.time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
+            const double ti = history.at(row, "t"), vi = history.at(row, history_column);
+            const bool in_window = time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
             if (in_window && std::isfinite(vi)) t.push_back(ti), v.push_back(vi);
         }
-        r.sampling[i] = q.scale * (q.time_average ? batch_mean_error(v) : detrended_spread(t, v));
+        return std::pair{scale * summary.at(s, summary_column), scale * (time_average ? batch_mean_error(v) : detrended_spread(t, v))};
+    };
+    for (int i = 0; i < kFig7Quantities; ++i) {
+        const Fig7Quantity& q = fig7_quantities()[i];
+        std::tie(r.value[i], r.sampling[i]) = read(q.summary_column, q.history_column, q.scale, q.time_average);
     }
+    if (is_tracer(run.kind)) {
+        std::tie(r.tracer, r.tracer_sampling) = read("tracer_core_layer", "tracer_core_layer", 1.0, false);
+        std::tie(r.points, r.points_sampling) = read("points_core_layer", "points_core_layer", 1.0, false);
+    }
+    // A tracer run repeats its grid run: its core column carries the tracer's retained share.
+    constexpr int kCore = 5;  // fig7_quantities()
+    if (run.kind == Fig7Kind::tracer) r.value[kCore] = r.tracer, r.sampling[kCore] = r.tracer_sampling;
     return r;
 }
 

@@ -1,46 +1,68 @@
 // The runs of the Fig. 7 solution-verification study (bench_fig7_convergence): which variants of
 // verification/scenes/tumbler.toml to run, running them (or reusing an earlier run of the same
-// scene text), and reading the Fig. 7 quantities and their sampling errors from each run's files.
+// scene text), and reading the Fig. 7 quantities, their sampling errors and the steps' bounds from
+// each run's files.
+//
+// The time step refines with the grid: every run takes dt_max = dt_ref (kDtRefCells / cells), so
+// that dt is proportional to h (a constant Courant number of dt_max); dt_ref is chosen so that
+// dt_max, not the CFL, outflow or compaction bound, sets the steps on every grid, which each run's
+// step counts by bound show (summary.dat steps_dt_max against steps). A grid's error is then the
+// grid's and its time step's together, both first order, shrinking with h at one rate.
 //
 // Every run is the paper's coupled drum with some keys changed and written, with its outputs, under
 // DIR/fig7_convergence/NAME.toml and NAME/ (so `granseg run NAME.toml` repeats it); no frames or VTK.
-//   grid      the default time stepping at each --cells, the explicit one at each --explicit-cells
-//   dt        the default time stepping at --dt-cells with dt_max halved and doubled
-//   tracer    a passive tracer in the core (S = 0, packing feedback off, closures of the 0.5
-//             mixture via [coupling] mixture, phi_hat = 1 within r_core, 0 elsewhere) at each --cells
-//   floor     the full model and the tracer at the finest --cells with T_floor lowered to --T-floor-low
+//   grid      each [flow] transport of --transports at each --cells; the explicit time stepping
+//             at each --explicit-cells
+//   dt        the first transport at the coarsest grid with dt_max times each --dt-coarse factor,
+//             and at the finest with each --dt-fine factor (factors below 1: dt_max keeps binding)
+//   tracer    the full model (S and packing feedback as in the paper's run) with a passive tracer
+//             ([initial] tracer = 1 within the drum's own core r_core_layer of the reference
+//             transport's grid run at that grid, 0 elsewhere; the tracer does not act on the flow,
+//             so the run repeats that grid run) at each --cells
+//   floor     the same at the second-finest --cells with T_floor lowered to --T-floor-low
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
 namespace granseg::verify {
 
+/// The grid at which dt_max equals Fig7Options::dt_ref; dt_max scales as kDtRefCells / cells.
+constexpr int kDtRefCells = 50;
+
 /// The study's settings (bench_fig7_convergence's command line; defaults: the real study).
 struct Fig7Options {
     std::string data_dir = "build/bench-data";
-    std::vector<int> cells{50, 71, 100};         // default time stepping, coarse to fine
-    std::vector<int> explicit_cells{50, 71};     // explicit time stepping (none, two or more)
-    int dt_cells = 0;                            // the dt study's grid (0: the finest of cells)
+    std::vector<int> cells{50, 70, 100, 140};    // coarse to fine (even counts keep the axis on a vertex)
+    std::vector<std::string> transports{"muscl", "donor-cell"};  // [flow] transport of the grid series, the first is the reference
+    std::vector<int> explicit_cells{};           // explicit time stepping (none, two or more)
+    double dt_ref = 2e-3;                        // s, dt_max at kDtRefCells cells per diameter
+    std::vector<double> dt_coarse{0.5, 0.25};    // dt_max factors of the dt study at the coarsest grid
+    std::vector<double> dt_fine{0.5};            // and at the finest
     bool dt_study = true, core_study = true;
     double t_end = 25.0, average_from = 10.0;    // s; the angle and layer are averaged over t >= average_from
     double jitter_window = 2.5;                  // s before t_end over which a value at t_end jitters
     double T_floor_low = 1e-14;                  // m^2/s^2, the floor run's T_floor
     int threads = 1;                             // OpenMP threads of every run
     int lanes = 0;                               // runs side by side (0: one per core; > 1 needs threads = 1)
-    std::string transport;                       // [flow] transport of every run ("": the scene's)
     bool reuse = false;                          // reuse a run whose scene text is unchanged
+
+    /// dt_max of a run at `cells` with the dt study's factor.
+    double dt_max(int cells, double factor = 1.0) const { return factor * dt_ref * kDtRefCells / cells; }
 };
 
-enum class Fig7Kind { grid, dt, tracer, floor, tracer_floor };
+enum class Fig7Kind { grid, dt, tracer, floor };
 
 struct Fig7Run {
     std::string name;           // also its directory under DIR/fig7_convergence
     Fig7Kind kind = Fig7Kind::grid;
     bool explicit_steps = false;
     int cells = 0;
-    double dt_factor = 1.0;     // dt_max relative to the scene's
+    double dt_factor = 1.0;     // dt_max relative to the grid's (Fig7Options::dt_max)
+    std::string transport;      // [flow] transport ("" for the explicit time stepping)
+    double dt_max = 0;          // s
 };
 
 /// The Fig. 7 quantities, in the order of every table: name, unit, whether it is a time average
@@ -62,17 +84,20 @@ const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities();
 struct Fig7Result {
     Fig7Run run;
     double wall = 0, cpu = 0, steps = 0, dt_mean = 0, h = 0;  // s, s (all threads), -, s (t_end / steps), m
+    double dt_max_share = 0;                                  // share of the steps whose dt dt_max set
     std::array<double, kFig7Quantities> value{}, sampling{};  // sampling: the standard error of a time
                                                               // average, or the jitter of a value at t_end
     double initial_mixture = 0, packing_spread = 0;
+    double tracer = NAN, tracer_sampling = NAN;  // tracer and floor runs: the tracer's share of the core at t_end
+    double points = NAN, points_sampling = NAN;  // and the material points' (no numerical diffusion)
 };
 
 /// A number of the study's scene (verification/scenes/tumbler.toml), or `fallback` where the scene
 /// leaves the key to its default.
 double fig7_scene_number(const char* section, const char* key, double fallback);
 
-/// The runs the options ask for, in the order they are run: grid runs coarse to fine, then the dt,
-/// tracer and floor runs.
+/// The runs the options ask for, in the order they are run: grid runs coarse to fine (each
+/// transport), the explicit runs, then the dt, tracer and floor runs.
 std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& options);
 
 /// Runs `run` (or, with options.reuse, reuses an earlier run of the same scene text) and reads its
