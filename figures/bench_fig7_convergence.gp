@@ -6,10 +6,11 @@
 # reads: fig7_runs.dat fig7_convergence.dat
 # Data: fig7_runs.dat (kind explicit cells h_mm dt_factor dt_mean_ms steps wall_s cpu_s, then per
 #       quantity value and _se: angle layer index ring periphery core contrast axis from column 10,
-#       then transport (0 the reference, 1 the second, -1 explicit) dt_max_ms dt_max_share);
+#       then transport (0 the reference, 1 the second, -1 explicit) dt_max_ms dt_max_share points
+#       points_se: the material points' retained share of the core in the tracer runs);
 #       fig7_convergence.dat (quantity series runs x1 f1 se_max condition p f0 p_u fs sigma U e_a e_ext
 #       chi2 chi2_95 lo hi outside; series 0 the reference transport, 1 explicit, 2 dt at the finest
-#       grid, 3 tracer, 4 the second transport, 5 dt at the coarsest grid).
+#       grid, 3 tracer, 4 the second transport, 5 dt at the coarsest grid, 6 material points).
 # Usage (from the Makefile): gnuplot -e "benchdir='build/bench-data'; outfile='x.png'" figures/bench_fig7_convergence.gp
 runs = benchdir.'/fig7_runs.dat'
 conv = benchdir.'/fig7_convergence.dat'
@@ -45,8 +46,10 @@ do for [q = 0:7] {
          conv u (($1 == q && $2 == 4) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#ff7f0e" t "second transport: limit", \
          conv u (($1 == q && $2 == 1) ? 0 : 1/0):9 w p pt 12 ps 2 lc rgb "#d62728" t "explicit: extrapolated (p = 1)"
 }
-set title "passive tracer (S = 0) started in the core:\nshare of the core's material at t_end that started there"
-plot conv u (($1 == 5 && $2 == 3) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#9467bd" t "f1 +- U", \
+set title "share of the core at t_end that started there\npurple: tracer (full model); brown: material points"
+set key bottom right
+plot conv u (($1 == 5 && $2 == 3) ? $4/2 : 1/0):5:($4/2):13 w boxxyerror lc rgb "#9467bd" t "tracer: f1 +- U", \
      runs u (($1 == 2) ? $4 : 1/0):20:21 w yerrorlines lw 2 pt 7 lc rgb "#9467bd" t "tracer runs", \
+     runs u (($1 == 2) ? $4 : 1/0):29:30 w yerrorlines lw 2 pt 5 lc rgb "#8c564b" t "material points", \
      conv u (($1 == 5 && $2 == 3) ? 0 : 1/0):9 w p pt 13 ps 2 lc rgb "#9467bd" t "extrapolated"
 unset multiplot

@@ -39,9 +39,7 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
     CheckTable t("Fig. 7's statements on the finest run (" + std::to_string(fine.run.cells) +
                  " cells per diameter), each bound widened by its grid and dt uncertainty");
     // The time step refines with the grid only where dt_max sets the steps (fig7_study.hpp).
-    const Fig7Result* loosest = nullptr;
-    for (const Fig7Result& r : a.results)
-        if (!r.run.explicit_steps && (!loosest || r.dt_max_share < loosest->dt_max_share)) loosest = &r;
+    const Fig7Result* loosest = &a.loosest_run();
     t.at_least("dt ~ h: share of steps set by dt_max, lowest run (" + loosest->run.name + ")", loosest->dt_max_share, kBinding);
     t.at_least("a. ring of small particles: ring - U >= mixture", fine.value[kRing] - a.band(kRing), m0);
     t.at_most("b. large particles at the wall: periphery + U <= mixture", fine.value[kPeriphery] + a.band(kPeriphery), m0);

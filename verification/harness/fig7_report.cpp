@@ -156,6 +156,13 @@ std::vector<const Fig7Result*> Fig7Analysis::dt_runs(int cells) const {
 
 const Fig7Result& Fig7Analysis::finest() const { return *runs(Fig7Kind::grid, false, reference_series).front(); }
 
+const Fig7Result& Fig7Analysis::loosest_run() const {
+    const Fig7Result* loosest = nullptr;
+    for (const Fig7Result& r : results)
+        if (!r.run.explicit_steps && (!loosest || r.dt_max_share < loosest->dt_max_share)) loosest = &r;
+    return *loosest;
+}
+
 const Fig7Result& Fig7Analysis::reference_run() const { return *dt_runs(finest().run.cells).front(); }
 
 double Fig7Analysis::band(int q) const {
@@ -187,11 +194,11 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     const auto& quantities = fig7_quantities();
     std::vector<std::string> columns{"kind", "explicit", "cells", "h_mm", "dt_factor", "dt_mean_ms", "steps", "wall_s", "cpu_s"};
     for (const Fig7Quantity& q : quantities) columns.push_back(q.name), columns.push_back(std::string(q.name) + "_se");
-    for (const char* c : {"transport", "dt_max_ms", "dt_max_share"}) columns.push_back(c);
+    for (const char* c : {"transport", "dt_max_ms", "dt_max_share", "points", "points_se"}) columns.push_back(c);
     DataTable runs(columns);
     runs.comment("bench_fig7_convergence: one row per run; kind 0 grid, 1 dt, 2 tracer, 3 floor (T_floor " +
                  fig7_number(o.T_floor_low) + ", the model with the tracer); tracer runs: the core columns hold the tracer's retained share; explicit 1 for the explicit time stepping; "
-                 "dt_mean = t_end/steps; transport: index in --transports (-1 explicit); dt_max_share: share of the steps whose dt dt_max set; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
+                 "dt_mean = t_end/steps; transport: index in --transports (-1 explicit); dt_max_share: share of the steps whose dt dt_max set; points, points_se: tracer runs' material points' retained share of the core; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
                  "and its sampling error (_se: standard error of the time average over t >= " + fig7_number(o.average_from) +
                  " s, or the jitter over the last " + fig7_number(o.jitter_window) + " s of a value at t_end = " +
                  fig7_number(o.t_end) + " s)");
@@ -201,7 +208,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
         for (int q = 0; q < kFig7Quantities; ++q) row.push_back(r.value[q]), row.push_back(r.sampling[q]);
         const auto t = std::find(o.transports.begin(), o.transports.end(), r.run.transport);
         row.push_back(r.run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin()));
-        row.push_back(1e3 * r.run.dt_max), row.push_back(r.dt_max_share);
+        row.push_back(1e3 * r.run.dt_max), row.push_back(r.dt_max_share), row.push_back(r.points), row.push_back(r.points_sampling);
         runs.row(row);
     }
     write_file_atomically(o.data_dir + "/fig7_runs.dat", runs.str());
@@ -236,7 +243,12 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     std::string cells, explicit_cells;
     for (int n : o.cells) cells += (cells.empty() ? "" : ", ") + std::to_string(n);
     for (int n : o.explicit_cells) explicit_cells += (explicit_cells.empty() ? "" : ", ") + std::to_string(n);
-    md << "\nWritten by `bench_fig7_convergence`: " << cells << " cells per diameter (default time stepping), "
+    std::string transports;
+    for (const std::string& t : o.transports) transports += (transports.empty() ? "" : ", ") + t;
+    const Fig7Result* loosest = &a.loosest_run();
+    md << "\nWritten by `bench_fig7_convergence`: " << cells << " cells per diameter (transports " << transports
+       << ", dt_max " << fig7_number(1e3 * o.dt_ref) << " ms × 50/cells; dt_max set " << fig7_number(100 * loosest->dt_max_share, 4)
+       << " % or more of every run's steps, least in " << loosest->run.name << "), "
        << (explicit_cells.empty() ? "none" : explicit_cells) << " (explicit), t_end = " << fig7_number(o.t_end)
        << " s, angle and layer averaged over t >= " << fig7_number(o.average_from)
        << " s, the other quantities at t_end (sampling error: their jitter over the last " << fig7_number(o.jitter_window)

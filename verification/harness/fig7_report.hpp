@@ -44,6 +44,8 @@ struct Fig7Analysis {
     std::vector<const Fig7Result*> runs(Fig7Kind kind, bool explicit_steps, const std::string& transport = "") const;
     /// The dt study at one grid: its dt runs and the reference transport's grid run, smallest dt first.
     std::vector<const Fig7Result*> dt_runs(int cells) const;
+    /// The run (explicit ones aside) whose steps dt_max set least often: the evidence that dt ~ h.
+    const Fig7Result& loosest_run() const;
     /// The finest grid run of the reference transport.
     const Fig7Result& finest() const;
     /// The reference of the work-against-error table: the finest grid's run with the smallest dt
