@@ -14,7 +14,12 @@
 
 SHELL := /bin/bash
 BUILD ?= build
-JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# Programs run side by side, one per core: the cores themselves, not nproc's answer (nproc obeys
+# OMP_NUM_THREADS and OMP_THREAD_LIMIT, so OMP_NUM_THREADS=1 would run one program at a time).
+JOBS ?= $(shell env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc 2>/dev/null || echo 2)
+# With several programs side by side each gets one OpenMP thread (more would oversubscribe the
+# cores: docs/flow_solver_choices.md, "Threads"); one at a time it keeps the caller's setting.
+RUN_THREADS = $(if $(filter 1,$(JOBS)),,OMP_NUM_THREADS=1)
 # -j$(JOBS) for the sub-makes, unless the caller already runs a parallel make (its jobserver is shared).
 PAR = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 
@@ -162,7 +167,7 @@ $(TEST_OBJ): CPPFLAGS += -DBOOST_TEST_DYN_LINK
 $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 	@mkdir -p $(@D) $(BUILD)/data
 	@t0=$$(date +%s.%N); \
-	$< --data $(BUILD)/data > $(BUILD)/results/$*.log 2>&1; rc=$$?; \
+	$(RUN_THREADS) $< --data $(BUILD)/data > $(BUILD)/results/$*.log 2>&1; rc=$$?; \
 	t1=$$(date +%s.%N); \
 	cat $(BUILD)/results/$*.log; \
 	printf "[%s: exit %d, %s s]\n\n" "$*" "$$rc" "$$(awk "BEGIN{printf \"%.1f\", $$t1 - $$t0}")"; \

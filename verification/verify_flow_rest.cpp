@@ -3,7 +3,7 @@
 // A column (and a 2-D box with side walls) starts with a uniform Phi, not in balance, at rest,
 // and settles; so do loose beds (Phi below Phi_co, where the yield pressure p_y vanishes and
 // nothing carries a load): columns anywhere in [Phi_co - 0.05, Phi_co), a loose layer on a dense
-// bed, and a loose box, which must compact to the same balance (docs/flow_solver.md Sect. 2, S2,
+// bed, and a loose box, which must compact to the same balance (docs/flow_solver.md Sect. 2, forces,
 // assumption F7). Checked against independent expectations:
 //   - Phi(z) converges to the lithostatic balance dp/dz = -Phi |g| (p from eqs. 15-19), integrated
 //     by GSL odeiv2 for the same mass (harness/flow_reference.cpp), with the error falling at the

@@ -1,4 +1,4 @@
-// Verification of the transport of Phi and phi (docs/flow_solver.md, S6): the donor cell and the
+// Verification of the transport of Phi and phi (docs/flow_solver.md, transport): the donor cell and the
 // high-resolution scheme (transport/muscl_hancock.hpp for Phi, segregation/bulk_transport_fct.hpp
 // for phi), against exact solutions.
 //

@@ -1,12 +1,21 @@
 #include "core/progress.hpp"
 
 #include <cstdio>
+#include <ctime>
 
 namespace granseg {
 
+namespace {
+double process_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+}  // namespace
+
 Progress::Progress(std::string label, double total, double quiet_seconds, double every_seconds)
     : label_(std::move(label)), total_(total), quiet_(quiet_seconds), every_(every_seconds),
-      start_(clock::now()), last_(start_) {}
+      start_(clock::now()), last_(start_), cpu_start_(process_cpu_seconds()) {}
 
 void Progress::update(double done) {
     const auto now = clock::now();
@@ -21,10 +30,16 @@ void Progress::update(double done) {
     last_ = now;
 }
 
-void Progress::finish() {
-    if (!printed_) return;
-    const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
-    std::fprintf(stderr, "%s: done in %.1f s\n", label_.c_str(), elapsed);
+RunTime Progress::finish(int threads) {
+    const RunTime cost{wall_seconds(), cpu_seconds(), threads};
+    if (printed_)
+        std::fprintf(stderr, "%s: done in %.1f s wall, %.1f s CPU (%d thread%s)\n", label_.c_str(), cost.wall, cost.cpu,
+                     threads, threads == 1 ? "" : "s");
+    return cost;
 }
+
+double Progress::wall_seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
+
+double Progress::cpu_seconds() const { return process_cpu_seconds() - cpu_start_; }
 
 }  // namespace granseg

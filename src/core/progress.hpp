@@ -1,6 +1,8 @@
 // Progress on stderr for long runs: "label: 42% (t = 10.5 of 25) 12 s elapsed, ETA 16 s".
 // Silent for the first few seconds, so short runs and verification programs stay quiet; then
-// one line every few seconds (plain lines, readable in CI logs).
+// one line every few seconds (plain lines, readable in CI logs). The run's wall and CPU seconds
+// (CPU: all threads of the process) and its threads go to the last line; wall_seconds() and
+// cpu_seconds() feed the run summaries.
 #pragma once
 
 #include <chrono>
@@ -8,14 +10,24 @@
 
 namespace granseg {
 
+/// What a run cost: wall-clock seconds, CPU seconds of the whole process (every thread), threads.
+struct RunTime {
+    double wall = 0.0, cpu = 0.0;
+    int threads = 1;
+};
+
 class Progress {
 public:
     /// `label` prefixes each line; `total` is the value of the progress variable at the end.
     Progress(std::string label, double total, double quiet_seconds = 3.0, double every_seconds = 5.0);
     /// Reports that the progress variable has reached `done` (prints only when due).
     void update(double done);
-    /// Prints a final line if anything was printed before.
-    void finish();
+    /// The run's cost so far; prints it as a final line if anything was printed before.
+    RunTime finish(int threads = 1);
+    /// Wall-clock seconds since construction.
+    double wall_seconds() const;
+    /// CPU seconds of the whole process (every thread) since construction.
+    double cpu_seconds() const;
 
 private:
     using clock = std::chrono::steady_clock;
@@ -23,6 +35,7 @@ private:
     double total_;
     double quiet_, every_;
     clock::time_point start_, last_;
+    double cpu_start_;
     bool printed_ = false;
 };
 

@@ -1,4 +1,4 @@
-// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 2, S3).
+// Implicit viscosity with all axes in one system (docs/flow_solver.md Sect. 2, viscosity).
 //
 //   solves      Phi u_new - dt div(eta grad u_new) = Phi u for each velocity component, by one
 //               sparse LDL^T factorisation per step and a back-substitution per component

@@ -1,7 +1,7 @@
 // The face rules of the flow solver's diffusion operators, in one place for the viscosity (split
 // line solves, flow/viscosity.hpp, and coupled, flow/coupled_viscosity.hpp), the temperature's
 // conduction and viscous heating (flow/temperature.hpp) and the velocity gradient
-// (flow/velocity_gradient.hpp); docs/flow_solver.md Sect. 2, S3.
+// (flow/velocity_gradient.hpp); docs/flow_solver.md Sect. 2, viscosity.
 //
 //   solves      nothing: the conductance of a face and the value a wall imposes
 //   inputs      the cells' coefficient kappa (eta, lambda), the grid, the wall velocities

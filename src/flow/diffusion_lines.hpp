@@ -5,7 +5,7 @@
 //   outputs     the factorised lines; solve() overwrites a right-hand side with the solution
 //   invariants  outside and empty cells are identity rows; M-matrices
 //
-// docs/flow_solver.md Sect. 2, S3: for a field x with coefficient kappa (eta for the velocity, lambda for T),
+// docs/flow_solver.md Sect. 2, viscosity: for a field x with coefficient kappa (eta for the velocity, lambda for T),
 //     Phi x_new - r d/dx_a (kappa dx_new/dx_a) h_a^2 = rhs,     r = dt/h_a^2 (times 3/2 for T),
 // with the face coefficient the harmonic mean of the two cells' kappa (a face between the bed and
 // near-empty air carries almost no stress or heat), walls Dirichlet at distance h/2 (no-slip,

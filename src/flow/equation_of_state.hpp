@@ -10,7 +10,7 @@
 // p(Phi) is increasing and convex on [0, Phi_rcp) (g is increasing and convex, and the yield term
 // switches on with a jump of the slope), so its inverse Phi(p) is increasing and concave, maps
 // [0, inf) onto [0, Phi_rcp), and never reaches Phi_rcp: the pressure-implicit step solves for p
-// and takes Phi = Phi(p) (docs/flow_solver.md Sect. 2, S4). Below p = 0 the inverse is continued by
+// and takes Phi = Phi(p) (docs/flow_solver.md Sect. 2, pressure_solve). Below p = 0 the inverse is continued by
 // its tangent at 0, Phi = p/T (slope 1/c^2 = 1/T at Phi = 0), which keeps it concave and smooth
 // for Newton's method.
 //

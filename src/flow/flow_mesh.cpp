@@ -1,16 +1,13 @@
 #include "flow/flow_mesh.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 #include <algorithm>
 
 namespace granseg {
 
 namespace {
-// Below this many cells the work of a loop is smaller than the cost of waking a second thread
-// (several microseconds per parallel loop, much more on a loaded machine): loops run serially.
-constexpr std::size_t kParallelCells = 2048;
-
 /// Kind of every face of `axis` (FaceKind): interior between two inside cells, a wall where only
 /// one side is inside (the domain boundary counts as outside unless the axis is periodic).
 std::vector<unsigned char> classify_faces(const Grid& grid, int a) {
@@ -63,7 +60,7 @@ FlowMesh::FlowMesh(Grid g) : grid(std::move(g)) {
         throw InputError("FlowSolver: grid.inside has the wrong size");
     for (int a = 0; a < 3; ++a) active[a] = grid.n[a] > 1;
     rows = static_cast<std::size_t>(grid.n[1]) * grid.n[2];
-    parallel = cells >= kParallelCells;
+    parallel = threads_pay(cells);
     row_lo.assign(rows, 0);
     row_hi.assign(rows, 0);
     inside.assign(cells, 0);

@@ -51,7 +51,7 @@ struct FlowMesh {
     Grid grid;
     std::array<bool, 3> active{};                   // n[axis] > 1
     std::size_t rows = 0;                           // ny * nz rows of cells along x
-    bool parallel = false;                          // threads pay off only on larger grids
+    bool parallel = false;                          // loops on the OpenMP threads (core/threads.hpp)
     std::vector<int> row_lo, row_hi;                // inside cells of row r lie in [row_lo[r], row_hi[r])
     std::vector<unsigned char> inside;              // 1 for inside cells (grid.inside or all)
     std::vector<std::size_t> inside_cells;          // their indices, in index order

@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/progress.hpp"
+#include "core/threads.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -13,7 +14,7 @@
 
 namespace granseg {
 
-void advance_flow(FlowSolver& solver, double t_end, const std::string& label, const std::function<void()>& after_step) {
+RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label, const std::function<void()>& after_step) {
     const double mass0 = solver.mass(), t0 = solver.time();
     Progress progress(label, t_end);
     while (solver.time() < t_end) {
@@ -25,7 +26,7 @@ void advance_flow(FlowSolver& solver, double t_end, const std::string& label, co
             throw InvariantError(label + ": mass changed by " + format_number(drift) + " (relative) between t = " +
                                  format_number(t0) + " and " + format_number(solver.time()) + " s");
     }
-    progress.finish();
+    return progress.finish(run_threads(solver.grid().cells()));
 }
 
 namespace {
@@ -123,6 +124,11 @@ void append_flow_work(const FlowSolver& solver, std::vector<std::string>& column
         columns.push_back(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
         values.push_back(solver.timers().seconds[k]);
     }
+}
+
+void append_run_time(const RunTime& cost, std::vector<std::string>& columns, std::vector<double>& values) {
+    for (const char* c : {"wall_seconds", "cpu_seconds", "threads"}) columns.push_back(c);
+    for (double v : {cost.wall, cost.cpu, static_cast<double>(cost.threads)}) values.push_back(v);
 }
 
 DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, double v_flow, const DrumShape* shape) {

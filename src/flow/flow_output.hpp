@@ -10,6 +10,7 @@
 
 #include "core/drum_shape.hpp"
 #include "core/output.hpp"
+#include "core/progress.hpp"
 #include "flow/flow_solver.hpp"
 
 #include <cmath>
@@ -25,8 +26,8 @@ constexpr double kMassDriftLimit = 1e-8;
 
 /// Steps `solver` to t_end, printing progress with an ETA on stderr for long runs, calling
 /// `after_step` (if given) after every step, and throwing InvariantError if the mass drifts by
-/// more than kMassDriftLimit.
-void advance_flow(FlowSolver& solver, double t_end, const std::string& label,
+/// more than kMassDriftLimit. Returns the run's wall and CPU seconds and its threads.
+RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label,
                   const std::function<void()>& after_step = {});
 
 /// Cell fields of the slice j = 0, one gnuplot block per row of x (blank lines between rows):
@@ -67,10 +68,14 @@ inline double flowing_layer_thickness(const DrumState& d, const DrumShape& shape
 }
 
 /// Appends the solver's work to a summary row: steps_X, the steps whose dt the bound X set
-/// (docs/flow_solver.md Sect. 2, S1), the semi-implicit step's pressure_solves, newton and krylov
+/// (docs/flow_solver.md Sect. 2, step_size), the semi-implicit step's pressure_solves, newton and krylov
 /// iterations (0 in the explicit step), the temperature solves' conjugate-gradient iterations,
 /// and seconds_S, the wall-clock seconds of each stage S of the step (FlowStage).
 void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values);
+
+/// Appends a run's cost to a summary row: wall_seconds, cpu_seconds (every thread of the process:
+/// CPU over wall says how many cores the run kept busy) and threads (core/threads.hpp).
+void append_run_time(const RunTime& cost, std::vector<std::string>& columns, std::vector<double>& values);
 
 /// Fits a line (total least squares) through the points where Phi crosses Phi_level between
 /// neighbouring inside cells within the window, and compares it with the horizontal

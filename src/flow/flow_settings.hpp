@@ -44,7 +44,7 @@ inline constexpr Choice<Factorisation> kFactorisations[] = {
 };
 
 /// How the semi-implicit step carries the mass balance: which Phi a face's mass flux M = Phi_d U takes
-/// (docs/flow_solver.md, S6; docs/flow_solver_choices.md, "The transport"). The coupled drum carries phi
+/// (docs/flow_solver.md, transport; docs/flow_solver_choices.md, "The transport"). The coupled drum carries phi
 /// with the same scheme (tumbler/coupled_tumbler.hpp).
 enum class Transport { donor_cell, muscl };
 inline constexpr Choice<Transport> kTransports[] = {

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/threads.hpp"
 #include "flow/convection.hpp"
 #include "flow/loads.hpp"
 #include "flow/primitives.hpp"
@@ -16,8 +17,9 @@
 namespace granseg {
 
 const char* flow_stage_name(FlowStage stage) {
-    static const char* const names[kFlowStages] = {"closures",       "forces",         "predictor", "viscosity",
-                                                   "pressure_solve", "pressure_faces", "transport", "temperature"};
+    static const char* const names[kFlowStages] = {"closures",       "step_size",      "forces", "predictor",
+                                                   "viscosity",      "pressure_faces", "pressure_solve", "repeat",
+                                                   "transport",      "increments",     "temperature"};
     return names[static_cast<int>(stage)];
 }
 
@@ -133,6 +135,7 @@ std::array<double, 2> FlowSolver::packing(std::size_t cell) const {
 }
 
 double FlowSolver::step(double t_end) {
+    const SerialScope serial(!mesh_.parallel);  // below the crossover Eigen's products run on one thread too
     Phi_before_ = state_.Phi;
     update_closures();
     const StepSize size =
@@ -169,6 +172,9 @@ StepSize FlowSolver::explicit_convection(double t_end) {
             hllc_face_fluxes(mesh_, a, state_, closures_, potential_, loads_[a], faces_[a]);
         }
         effective_pressure(mesh_, faces_, closures_);
+    }
+    {
+        Stopwatch watch(timers_, FlowStage::step_size);
         const StepRates rates = explicit_step_rates(mesh_, state_, closures_, faces_);
         size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
     }

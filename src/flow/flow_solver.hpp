@@ -10,71 +10,79 @@
 //               Phi < Phi_rcp (a step that breaks one throws InvariantError)
 //
 // FlowSolver owns the state (flow/flow_state.hpp) and runs a step as a list of stages, each a
-// private member function that calls free kernels with const inputs (Lie splitting).
+// private member function that calls free kernels with const inputs (Lie splitting). A stage's
+// label is the name of its timer (FlowStage, the summaries' seconds_LABEL), the same in the
+// driver (semi_implicit_step.cpp) and docs/flow_solver.md.
 // Both modes:
-//   0. Phi_before = Phi; primitives u, T, the closures and the cell potential psi at t^n
+//   closures: Phi_before = Phi; primitives u, T, the closures and the cell potential psi at t^n
 //      (flow/primitives.hpp, flow/loads.hpp);
 //   ...the mode's stages...
-//   T. temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
+//   temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
 //      (3/2) div(lambda grad T) implicit in one sparse system (T relaxes towards
 //      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow/temperature.hpp).
 // Explicit step (time_stepping = "explicit", explicit_step):
-//   E1. per active axis the face potentials and the unsupported loads (flow/loads.hpp) and the
-//       HLLC face fluxes with hydrostatic reconstruction (flow/convection.hpp, flow/hllc.hpp);
+//   forces: per active axis the face potentials and the unsupported loads (flow/loads.hpp) and
+//       the HLLC face fluxes with hydrostatic reconstruction (flow/convection.hpp, flow/hllc.hpp);
 //       the effective pressure of eta, lambda, eps Phi (flow/primitives.hpp);
-//   E2. dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0 and T,
-//       u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
+//   step_size: dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0
+//       and T, u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
 //       (flow/time_step.hpp);
-//   E3. the conservative update, body forces along inactive or periodic axes, optional sources,
-//       Coriolis rotation of u over dt (exact) (explicit_update, flow/convection.hpp);
-//   E4. implicit viscosity d(Phi u)/dt = div(eta grad u), all axes in one system or split by
-//       axis into line solves (flow/coupled_viscosity.hpp, flow/viscosity.hpp).
+//   predictor: the conservative update, body forces along inactive or periodic axes, optional
+//       sources, Coriolis rotation of u over dt (exact) (explicit_update, flow/convection.hpp);
+//   viscosity: implicit viscosity d(Phi u)/dt = div(eta grad u), all axes in one system or split
+//       by axis into line solves (flow/coupled_viscosity.hpp, flow/viscosity.hpp).
 // Semi-implicit step (the default, semi_implicit_step; kernels in flow/semi_implicit.hpp):
-//   S1. dt from the material speeds |u_n|, |U| and the outflow and compaction of the last step's
-//       fluxes, at most kStepGrowth times the last dt (flow/time_step.hpp);
-//   S2. forces at t^n: face potentials and loads, reconstructed pressures p' and face forces D,
-//       the effective pressure; the state at t^n kept for a repeat;
-//   S3. predictor: each cell's share of D and its weight at t^n, Coriolis, sources (E3 without
-//       mass flux), the force part A of that change; implicit viscosity (E4): u*;
-//   S4. pressure correction: face predictor U*, donors, coupling K and explicit mass change; the
-//       pressure solve for the increments dp; corrected faces U, M = Phi_d U, the dust cap,
-//       Phi after the step, the fluxes of momentum and Phi T; again (at most 4 solves) while
-//       the pressure reversed faces onto a cell holding clearly less; then the outflow and
-//       compaction bounds checked on these fluxes;
-//   S5. a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the dt,
-//       again from S3;
-//   S6. transport: Phi_new = Phi - dt div M exactly, Phi u and Phi T with the donors' values
+//   step_size: dt from the material speeds |u_n|, |U| and the outflow and compaction of the last
+//       step's fluxes, at most kStepGrowth times the last dt (flow/time_step.hpp);
+//   forces: forces at t^n: face potentials and loads, reconstructed pressures p' and face forces
+//       D, the effective pressure; the state at t^n kept for a repeat;
+//   predictor: each cell's share of D and its weight at t^n, Coriolis, sources (the explicit
+//       update without mass flux), the force part A of that change;
+//   viscosity: implicit viscosity (as in the explicit step): u*;
+//   pressure_faces: face predictor U*, donors, coupling K and explicit mass change; after the
+//       solve the corrected faces U, M = Phi_d U, the dust cap, Phi after the step, the fluxes
+//       of momentum and Phi T; again (at most 4 solves) while the pressure reversed faces onto
+//       a cell holding clearly less; then the outflow and compaction bounds checked on these
+//       fluxes (the reconstruction's face values, transport = muscl, are timed as transport);
+//   pressure_solve: the Newton solve for the pressure increments dp (flow/pressure_solver.hpp);
+//   repeat: a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the
+//       dt, again from predictor;
+//   transport: Phi_new = Phi - dt div M exactly, Phi u and Phi T with the donors' values
 //       (transport_update, flow/convection.hpp);
-//   S7. the velocity change since u* diffused by the viscosity solve of S3 with walls at rest
-//       (the solve is linear): u = u* + V0(u - u*).
+//   increments: the velocity change since u* diffused by the viscosity's solve with walls at
+//       rest (the solve is linear): u = u* + V0(u - u*).
 // Walls: no-slip (moving domain-boundary walls allowed), adiabatic, no mass flux. An axis with
 // one cell is inactive (the field does not vary along it). Embedded walls: grid.inside.
 //
 // What each stage reads and writes. Fields of state_ and closures_ by their symbols (Phi, Phi u,
 // Phi T, u, T; p, c, eta, lambda, eps Phi, Phi_rcp, Phi_co), psi = potential_; "faces" and "pf"
 // are faces_ and pressure_ of the active axes; other names are members.
-//   stage  reads                                           writes
-//   0      Phi, Phi u, Phi T, phi_hat_                     Phi_before_, u, T, closures_, psi (cells)
-//   E1     Phi, u, T, p, c, Phi_co, psi                    psi (faces), loads_, faces, eta, lambda, eps Phi
-//   E2     Phi, Phi_rcp, faces M and speed                 dt
-//   E3     faces, Phi                                      Phi, Phi u, Phi T, u, T
-//   E4     Phi, u, eta                                     u, Phi u (line_rhs_: split solves)
-//   S1     Phi, u, c, Phi_co, Phi_rcp, faces M and speed   dt
-//          (the last step's), dt_
-//   S2     Phi, u, T, p, c, Phi_co, psi; Phi u, Phi T      psi (faces), loads_, pf (p', p - p', D;
-//                                                          reversed = 0), faces p, eta, lambda,
-//                                                          eps Phi; m_start_, u_start_, E_start_
-//   S3     pf, Phi, u, c, u_start_, eta                    faces (M = 0), Phi u, Phi T, u, T (Phi with
-//                                                          sources), force_part_; then u, Phi u (u*;
-//                                                          line_rhs_: split solves)
-//   S4     Phi, u, T, p, Phi_rcp, Phi_co, force_part_,     pf (U*, donor, K, flux, reversed),
-//          pf, dp_                                         mass_change_, dp_, faces, dust_scale_,
-//                                                          Phi_after_
-//   S5     Phi_before_, m_start_, u_start_, E_start_       Phi, Phi u, u, Phi T, dp_, pf reversed
-//   S6     Phi, Phi u, Phi T, u, faces                     u_star_; Phi, Phi u, Phi T, u, T
-//   S7     u, u_star_, Phi_before_, Phi, eta               velocity_change_, u, Phi u (increment_,
-//                                                          line_rhs_: split solves)
-//   T      Phi, u, T, eta, lambda, eps Phi                 heat_, T, Phi T
+//   stage            reads                                   writes
+//   closures         Phi, Phi u, Phi T, phi_hat_             Phi_before_, u, T, closures_, psi (cells)
+//   explicit step:
+//   forces           Phi, u, T, p, c, Phi_co, psi            psi (faces), loads_, faces, eta, lambda, eps Phi
+//   step_size        Phi, Phi_rcp, faces M and speed         dt
+//   predictor        faces, Phi                              Phi, Phi u, Phi T, u, T
+//   viscosity        Phi, u, eta                             u, Phi u (line_rhs_: split solves)
+//   semi-implicit step:
+//   step_size        Phi, u, c, Phi_co, Phi_rcp, faces M     dt
+//                    and speed (the last step's), dt_
+//   forces           Phi, u, T, p, c, Phi_co, psi; Phi u,    psi (faces), loads_, pf (p', p - p', D;
+//                    Phi T                                   reversed = 0), faces p, eta, lambda,
+//                                                            eps Phi; m_start_, u_start_, E_start_
+//   predictor        pf, Phi, u, c, u_start_                 faces (M = 0), Phi u, Phi T, u, T (Phi
+//                                                            with sources), force_part_
+//   viscosity        Phi, u, eta                             u, Phi u (u*; line_rhs_: split solves)
+//   pressure_faces   Phi, u, T, p, Phi_rcp, Phi_co,          pf (U*, donor, K, flux, reversed),
+//                    force_part_, pf, dp_                    mass_change_, faces, dust_scale_, Phi_after_
+//   pressure_solve   Phi, T, p, Phi_rcp, Phi_co, pf K,       dp_
+//                    mass_change_, dp_
+//   repeat           Phi_before_, m_start_, u_start_,        Phi, Phi u, u, Phi T, dp_, pf reversed
+//                    E_start_
+//   transport        Phi, Phi u, Phi T, u, faces             u_star_; Phi, Phi u, Phi T, u, T
+//   increments       u, u_star_, Phi_before_, Phi, eta       velocity_change_, u, Phi u (increment_,
+//                                                            line_rhs_: split solves)
+//   temperature      Phi, u, T, eta, lambda, eps Phi         heat_, T, Phi T
 //
 // Coupling hand-over (per step): Phi before and after, T, u, the cell velocity gradient, and
 // per axis the face mass flux M (Phi u_n) such that in every inside cell
@@ -104,13 +112,23 @@
 
 namespace granseg {
 
-/// The stages of step() whose wall-clock time FlowTimers keeps (each second counted once):
-/// closures (stage 0); forces: loads, face forces or HLLC fluxes, dt (E1-E2, S1-S2); predictor: the
-/// explicit update with the forces (E3, S3); viscosity (E4, S3, S7); pressure_solve (S4's Newton
-/// solves); pressure_faces (the rest of S4 and S5); transport (S6); temperature.
-enum class FlowStage { closures, forces, predictor, viscosity, pressure_solve, pressure_faces, transport, temperature };
-constexpr int kFlowStages = 8;
-/// The stage's name as in the output tables ("closures", "forces", ...).
+/// The stages of step(), in the order a step runs them (their labels in the header comment and
+/// docs/flow_solver.md); FlowTimers keeps the wall-clock time of each (each second counted once).
+enum class FlowStage {
+    closures,
+    step_size,
+    forces,
+    predictor,
+    viscosity,
+    pressure_faces,
+    pressure_solve,
+    repeat,
+    transport,
+    increments,
+    temperature
+};
+constexpr int kFlowStages = 11;
+/// The stage's label, as in the output tables ("closures", "step_size", ...).
 const char* flow_stage_name(FlowStage stage);
 
 /// Wall-clock seconds spent in each FlowStage (for benchmarks and run summaries).
@@ -189,53 +207,53 @@ private:
     };
 
     // Both modes (flow_solver.cpp).
-    /// 0. Primitives, closures and the cell potential at t_.
+    /// closures: primitives, closures and the cell potential at t_.
     void update_closures();
     /// The face potentials and unsupported loads of `axis` at t^n.
     void face_loads(int axis);
-    /// E4, S3: the implicit viscosity of a step dt, coupled or split as the settings say.
+    /// viscosity: the implicit viscosity of a step dt, coupled or split as the settings say.
     void viscosity(double dt);
-    /// T. The temperature step.
+    /// temperature: the temperature step.
     void temperature(double dt);
     void check_invariants() const;
 
-    // The explicit step (flow_solver.cpp): E1-E3, then E4. Returns dt and its bound.
+    // The explicit step (flow_solver.cpp): forces, step_size, predictor, viscosity. Returns dt and its bound.
     StepSize explicit_step(double t_end);
-    /// E1-E3: HLLC fluxes, effective pressure, dt, the update.
+    /// forces, step_size, predictor: HLLC fluxes, effective pressure, dt, the update.
     StepSize explicit_convection(double t_end);
 
-    // The semi-implicit step (semi_implicit_step.cpp): S1-S7. Returns dt and its bound.
+    // The semi-implicit step (semi_implicit_step.cpp): step_size to increments. Returns dt and its bound.
     StepSize semi_implicit_step(double t_end);
-    /// S1. dt and its bound.
+    /// step_size: dt and its bound.
     StepSize semi_implicit_dt(double t_end);
-    /// S2. The forces at t^n and the effective pressure.
+    /// forces: the forces at t^n and the effective pressure.
     void forces_at_start();
-    /// S2-S5: keeps the state at t^n; predictor, viscosity, pressure correction, repeated with
-    /// half the dt until the fluxes keep every bound. Returns the dt that did.
+    /// predictor to repeat: keeps the state at t^n; predictor, viscosity, pressure correction,
+    /// repeated with half the dt until the fluxes keep every bound. Returns the dt that did.
     StepSize predict_and_correct(StepSize size);
-    /// S2. m_start_, u_start_, E_start_.
+    /// forces: m_start_, u_start_, E_start_.
     void keep_start_state();
-    /// S3. The predictor's forces at t^n and the force part A (before viscosity).
+    /// predictor: the forces at t^n and the force part A (before viscosity).
     void predictor_forces(double dt);
-    /// S4. The pressure correction with its donor passes; whether the fluxes keep every bound
-    /// (false also when the pressure equation did not converge).
+    /// pressure_faces and pressure_solve: the pressure correction with its donor passes; whether
+    /// the fluxes keep every bound (false also when the pressure equation did not converge).
     bool pressure_correct(double dt);
-    /// S4. U* of every face, and with transport = muscl the face values of Phi for them (once per
+    /// pressure_faces: U* of every face, and with transport = muscl the face values of Phi for them (once per
     /// attempt: the donor passes change only the donors).
     void face_velocities(double dt);
-    /// S4. Donors, K of every face and the explicit mass change r_c.
+    /// pressure_faces: donors, K of every face and the explicit mass change r_c.
     void face_donors_and_change(double dt);
-    /// S4. The pressure solve for dp_ (counted; `repeat`: dp_ solved this step's equation already);
+    /// pressure_solve: the Newton solve for dp_ (counted; `repeat`: dp_ solved this step's equation already);
     /// whether it converged.
     bool solve_pressure(bool repeat);
-    /// S4. Corrected faces, dust cap, Phi after the step and the fluxes; returns how many faces
+    /// pressure_faces: corrected faces, dust cap, Phi after the step and the fluxes; returns how many faces
     /// the pressure reversed (marked for the smaller donor).
     long corrected_fluxes(double dt);
-    /// S5. Restores the state at t^n and halves dt; throws InvariantError below dt_min.
+    /// repeat: restores the state at t^n and halves dt; throws InvariantError below dt_min.
     StepSize restart_with_half_dt(StepSize size);
-    /// S6. Transport by the corrected fluxes (u* kept in u_star_).
+    /// transport: transport by the corrected fluxes (u* kept in u_star_).
     void transport(double dt);
-    /// S7. The velocity change since u* diffused like the predictor's: u = u* + V0(u - u*).
+    /// increments: the velocity change since u* diffused like the predictor's: u = u* + V0(u - u*).
     void diffuse_increments(double dt);
     /// A velocity change du diffused by the step's viscosity solve with walls at rest (the
     /// solve is linear: V(u + du) = V(u) + V0(du)); cells empty at t^n keep du.

@@ -1,4 +1,4 @@
-// The potential psi and the loads of the hydrostatic reconstruction (docs/flow_solver.md Sect. 2, S2;
+// The potential psi and the loads of the hydrostatic reconstruction (docs/flow_solver.md Sect. 2, forces;
 // the reconstruction itself is hydrostatic_reconstruction() in flow/hllc.hpp).
 //
 //   solves      nothing over time: psi and the unsupported loads at t^n

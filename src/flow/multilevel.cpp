@@ -13,8 +13,8 @@ namespace {
 /// A level with at most this many rows is solved directly: its dense factorisation (n^3/3
 /// flops, once per matrix) costs about one sweep over the finest level of a 50-cell drum.
 constexpr long kCoarsestRows = 40;
-/// A colour of fewer rows is swept on one thread (FlowMesh's rule: a loop over fewer than 2 048
-/// cells costs less than waking a second thread; a level of 2 048 rows has two colours of 1 024).
+/// A colour of fewer rows is swept on one thread (on a grid that runs on threads, core/threads.hpp:
+/// a loop over fewer than about 1,000 rows costs less than waking a second thread).
 constexpr long kParallelRows = 1024;
 /// A row with a_ii >= kDominance sum_{j != i} |a_ij| stays out of the coarse levels (header
 /// comment). Measured on the drum's Jacobians: 2, 5, 20 and 1e9 give the same iterations (the
@@ -26,12 +26,18 @@ constexpr double kDominance = 5.0;
 /// with 1.4.
 constexpr double kOverCorrection = 1.4;
 
-/// Calls body(begin, end) on [0, m): split among OpenMP threads where `parallel` and
-/// m >= kParallelRows, else once (outside an OpenMP region: a region costs about a microsecond
-/// on one thread too, and a W-cycle passes many small levels).
+/// Calls body(begin, end) on [0, m). Within a team (`team`: every thread of an enclosing parallel
+/// region calls this) each thread takes its share and waits for the others at a barrier; else
+/// split among new OpenMP threads where `parallel` and m >= kParallelRows, else once (outside an
+/// OpenMP region: a region costs about a microsecond on one thread too, and a W-cycle passes many
+/// small levels).
 template <class Body>
-void for_rows(long m, bool parallel, Body&& body) {
-    if (parallel && m >= kParallelRows) {
+void for_rows(long m, bool parallel, Body&& body, bool team = false) {
+    if (team) {
+        const long t = omp_get_thread_num(), threads = omp_get_num_threads();
+        body(m * t / threads, m * (t + 1) / threads);
+#pragma omp barrier
+    } else if (parallel && m >= kParallelRows) {
 #pragma omp parallel
         {
             const long t = omp_get_thread_num(), threads = omp_get_num_threads();
@@ -170,7 +176,7 @@ Multilevel& Multilevel::take_values(const double* value) {
     return *this;
 }
 
-void Multilevel::sweep(const Level& L, bool backward) const {
+void Multilevel::sweep(const Level& L, bool backward, bool team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     double* x = L.x.data();
@@ -184,11 +190,11 @@ void Multilevel::sweep(const Level& L, bool backward) const {
                 const double d = L.A.valuePtr()[L.diagonal[r]];
                 x[r] = alone ? b[r] / d : x[r] + row_residual(L.A, b, x, r) / d;
             }
-        });
+        }, team);
     }
 }
 
-void Multilevel::restrict_residual(const Level& L, const Level& C, bool swept) const {
+void Multilevel::restrict_residual(const Level& L, bool swept, bool team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     const double* x = L.x.data();
@@ -201,11 +207,23 @@ void Multilevel::restrict_residual(const Level& L, const Level& C, bool swept) c
                 const long r = rows[s];
                 res[r] = zero || L.joins[r] == 0.0 ? 0.0 : row_residual(L.A, b, x, r);
             }
-        });
+        }, team);
     }
+}
+
+void Multilevel::gather_residual(const Level& L, const Level& C) const {
     C.b.setZero();
     double* coarse = C.b.data();
+    const double* res = L.r.data();
     for (long r = 0; r < L.A.rows(); ++r) coarse[L.aggregate[r]] += res[r];
+}
+
+void Multilevel::correct(const Level& L, const Level& C, bool team) const {
+    double* x = L.x.data();
+    const double* xc = C.x.data();
+    for_rows(L.A.rows(), parallel_, [&, x, xc](long begin, long end) {
+        for (long r = begin; r < end; ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
+    }, team);
 }
 
 void Multilevel::cycle(std::size_t l) const {
@@ -216,17 +234,41 @@ void Multilevel::cycle(std::size_t l) const {
     }
     const Level& C = level_[l + 1];
     L.x.setZero();
-    sweep(L, false);
+    sweep(L, false, false);
     for (int visit = 0; visit < L.visits; ++visit) {
-        restrict_residual(L, C, visit == 0);
+        restrict_residual(L, visit == 0, false);
+        gather_residual(L, C);
         cycle(l + 1);
-        double* x = L.x.data();
-        const double* xc = C.x.data();
-        for_rows(L.A.rows(), parallel_, [&, x, xc](long begin, long end) {
-            for (long r = begin; r < end; ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
-        });
+        correct(L, C, false);
     }
-    sweep(L, true);
+    sweep(L, true, false);
+}
+
+void Multilevel::team_cycle(const double* b) const {
+    const Level& L = level_[0];
+    double* x = L.x.data();
+    double* fine_b = L.b.data();
+    for_rows(L.A.rows(), parallel_, [&, x, fine_b](long begin, long end) {
+        for (long r = begin; r < end; ++r) fine_b[r] = b[r], x[r] = 0.0;
+    }, true);
+    if (level_.size() == 1) {
+#pragma omp single
+        L.x = coarsest_.solve(L.b);
+        return;
+    }
+    const Level& C = level_[1];
+    sweep(L, false, true);
+    for (int visit = 0; visit < L.visits; ++visit) {
+        restrict_residual(L, visit == 0, true);
+        // The coarse levels on one thread; the others wait at the end of the single block.
+#pragma omp single
+        {
+            gather_residual(L, C);
+            cycle(1);
+        }
+        correct(L, C, true);
+    }
+    sweep(L, true, true);
 }
 
 const Multilevel::Vector& Multilevel::solve(const Vector& b) const {

@@ -8,11 +8,11 @@
 //   invariants  every level is again a diagonal plus a weighted graph Laplacian; new values
 //               re-add sums along maps built once, without allocation
 //
-// Used by the pressure solve (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 2, S4): symmetric positive definite matrices
+// Used by the pressure solve (flow/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive definite matrices
 // A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with
 // faces of weight 0, the inside cells of a drum an irregular part of the grid).
 //
-// The choice (docs/flow_solver.md Sect. 2, S4, "The multilevel preconditioner"):
+// The choice (docs/flow_solver.md Sect. 2, pressure_solve, "The multilevel preconditioner"):
 // * Aggregation: the cells of each 2 x 2 (x 2) block of the grid form one coarse cell (on the
 //   coarse grid again, level by level), whatever the mask; the prolongation P is piecewise
 //   constant, so the coarse matrix is the Galerkin product A_c = P^T A P, formed from the actual
@@ -67,6 +67,12 @@ public:
 
     /// z = B b: one cycle from z = 0 for A z = b (valid until the next call).
     const Vector& solve(const Vector& b) const;
+    /// The same cycle, called by every thread of an OpenMP team (inside its parallel region):
+    /// the finest level's loops shared, with barriers, the coarse levels on one thread; z (the same
+    /// bits on any number of threads) is then `result()`. b: one value per row.
+    void team_cycle(const double* b) const;
+    /// z of the last team_cycle (or solve).
+    const Vector& result() const { return level_[0].x; }
 
     /// Number of levels (1: the fine matrix alone, solved directly).
     int levels() const { return static_cast<int>(level_.size()); }
@@ -95,11 +101,16 @@ private:
         mutable Vector x, r, b;                 // the V-cycle's iterate, residual and right-hand side
     };
 
+    // `team`: called by every thread of an OpenMP team, each taking its share of the rows.
     /// One Gauss-Seidel sweep for A x = b on level L, colours in order or (backward) in reverse order.
-    void sweep(const Level& L, bool backward) const;
-    /// The coarse right-hand side P^T r of level L, r = b - A x (0 on the rows that do not join
-    /// the coarse level and, right after a forward sweep (`swept`), on its last colour's rows).
-    void restrict_residual(const Level& L, const Level& C, bool swept) const;
+    void sweep(const Level& L, bool backward, bool team) const;
+    /// The residual r = b - A x of level L (0 on the rows that do not join the coarse level and,
+    /// right after a forward sweep (`swept`), on its last colour's rows)...
+    void restrict_residual(const Level& L, bool swept, bool team) const;
+    /// ...and its sum P^T r into the coarse right-hand side (one thread).
+    void gather_residual(const Level& L, const Level& C) const;
+    /// x += a P x_c on level L (the over-corrected coarse correction).
+    void correct(const Level& L, const Level& C, bool team) const;
     /// x = cycle for A x = b on level l, from x = 0.
     void cycle(std::size_t l) const;
 

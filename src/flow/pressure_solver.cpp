@@ -1,6 +1,7 @@
 #include "flow/pressure_solver.hpp"
 
 #include "flow/equation_of_state.hpp"
+#include "flow/team_cg.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -145,9 +146,16 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         cg_.factorize(J_);
         // Each solve only needs to bring the residual well below the Newton tolerance: with the
         // warm start that is often a small relative reduction.
-        cg_.setTolerance(std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm())));
-        const Eigen::VectorXd step = cg_.solve(-F_);
-        stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
+        const double krylov_tolerance = std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm()));
+        // On a grid that runs on threads the whole CG in one parallel region (flow/team_cg.hpp).
+        if (mesh.parallel) {
+            stats.krylov += static_cast<int>(team_cg(J_, cg_.preconditioner(), -F_, krylov_tolerance, step_).iterations) + 1;
+        } else {
+            cg_.setTolerance(krylov_tolerance);
+            step_ = cg_.solve(-F_);
+            stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
+        }
+        const Eigen::VectorXd& step = step_;
         newton_update(mesh, material, state, cl, step);
         resolution = evaluate();
     }

@@ -1,4 +1,4 @@
-// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 2, S4).
+// The implicit pressure equation of the semi-implicit step (docs/flow_solver.md Sect. 2, pressure_solve).
 //
 //   solves      F(dp) = 0 (below) for the pressure increments dp, by Newton's method with
 //               multilevel-preconditioned conjugate gradients for each Newton step
@@ -22,7 +22,8 @@
 // increasing and the coupling matrix is a weighted graph Laplacian, so the Newton iterates after
 // the first approach the solution from below (Casulli & Zanolli, SIAM J. Sci. Comput. 32, 2010):
 // Phi stays below Phi_rcp. Each Newton step solves J s = -F, J = diag(dPhi/dp) + K, symmetric
-// positive definite, by conjugate gradients (Eigen) only as far as the Newton tolerance needs,
+// positive definite, by conjugate gradients only as far as the Newton tolerance needs (Eigen's,
+// or on a grid that runs on threads flow/team_cg.hpp, the same iteration in one parallel region),
 // preconditioned by one multilevel cycle (flow/multilevel.hpp: aggregation of 2 x 2 (x 2) grid
 // cells, Galerkin coarse matrices), whose iterations hardly grow with the grid, where Jacobi's
 // grew like 1/h (docs/flow_solver_choices.md, "Why these choices"); the sparsity pattern (inside cells, interior
@@ -86,7 +87,7 @@ private:
                        const Eigen::VectorXd& step);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
-    Eigen::VectorXd x_, volume_, slope_, F_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F
+    Eigen::VectorXd x_, volume_, slope_, F_, step_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F, Newton step
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 

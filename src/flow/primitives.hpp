@@ -29,7 +29,7 @@ void compute_primitives(const FlowMesh& mesh, const Material& material, const Fl
 /// Scales eta, lambda and eps Phi (proportional to p at fixed T, eqs. 16-20) by p_eff/p, p_eff the
 /// larger of the cell's own p and, per axis, the mean of its two faces' pressures `faces[a].p`
 /// (a cell holding the free surface rests on the face below with its full weight although its
-/// own p(Phi) is nearly 0; docs/flow_solver.md Sect. 2, S2).
+/// own p(Phi) is nearly 0; docs/flow_solver.md Sect. 2, forces).
 void effective_pressure(const FlowMesh& mesh, const FlowFaces& faces, CellClosures& closures);
 
 }  // namespace granseg

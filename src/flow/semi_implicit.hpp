@@ -1,4 +1,4 @@
-// The faces of the semi-implicit (pressure-implicit) step (docs/flow_solver.md Sect. 2, S2-S4):
+// The faces of the semi-implicit (pressure-implicit) step (docs/flow_solver.md Sect. 2, forces to pressure_faces):
 // transport explicit, the acoustic part implicit, so that dt follows the material speed, not
 // the sound speed. One pass of an incremental pressure correction with Rhie-Chow face
 // velocities (Rhie & Chow, AIAA J. 21, 1983; Patankar, "Numerical Heat Transfer and Fluid

@@ -20,24 +20,25 @@ constexpr int kDonorPasses = 4;
 }  // namespace
 
 StepSize FlowSolver::semi_implicit_step(double t_end) {
-    // S1. dt from the material speeds and the bounds of the last step's fluxes, at most
+    // step_size: dt from the material speeds and the bounds of the last step's fluxes, at most
     //     kStepGrowth times the last dt (flow/time_step.hpp).
     StepSize size = semi_implicit_dt(t_end);
-    // S2. The forces at t^n: face potentials and loads, the reconstructed pressures and face
+    // forces: the forces at t^n: face potentials and loads, the reconstructed pressures and face
     //     forces D, the effective pressure of eta, lambda, eps Phi.
     forces_at_start();
-    // S3-S5. Predict (u*), correct with the implicit pressure; while the corrected fluxes break
-    //     a bound of the step, restore the state at t^n and repeat with half the dt.
+    // predictor, viscosity, pressure_faces, pressure_solve, repeat: predict (u*), correct with the
+    //     implicit pressure; while the corrected fluxes break a bound of the step, restore the
+    //     state at t^n and repeat with half the dt.
     size = predict_and_correct(size);
-    // S6. Transport: Phi_new = Phi - dt div M, momentum and Phi T with the donors' values.
+    // transport: Phi_new = Phi - dt div M, momentum and Phi T with the donors' values.
     transport(size.dt);
-    // S7. The velocity change since u* (transport, pressure increments) diffused like the predictor's.
+    // increments: the velocity change since u* (transport, pressure increments) diffused like the predictor's.
     diffuse_increments(size.dt);
     return size;
 }
 
 StepSize FlowSolver::semi_implicit_dt(double t_end) {
-    Stopwatch watch(timers_, FlowStage::forces);
+    Stopwatch watch(timers_, FlowStage::step_size);
     // The rates of the last step's faces: this step's depend on dt.
     const StepRates rates = material_step_rates(mesh_, state_, closures_, faces_, steps_ == 0);
     StepSize size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
@@ -58,15 +59,15 @@ void FlowSolver::forces_at_start() {
 StepSize FlowSolver::predict_and_correct(StepSize size) {
     keep_start_state();
     for (;;) {
-        predictor_forces(size.dt);                   // S3: forces at t^n, the force part A
-        viscosity(size.dt);                          // S3: implicit viscosity, u*
-        if (pressure_correct(size.dt)) return size;  // S4: fluxes within every bound
-        size = restart_with_half_dt(size);           // S5
+        predictor_forces(size.dt);                   // predictor: forces at t^n, the force part A
+        viscosity(size.dt);                          // viscosity: u*
+        if (pressure_correct(size.dt)) return size;  // pressure_faces, pressure_solve: fluxes within every bound
+        size = restart_with_half_dt(size);           // repeat
     }
 }
 
 void FlowSolver::keep_start_state() {
-    Stopwatch watch(timers_, FlowStage::predictor);
+    Stopwatch watch(timers_, FlowStage::forces);
     m_start_ = state_.m, u_start_ = state_.u, E_start_ = state_.E;
 }
 
@@ -139,7 +140,7 @@ long FlowSolver::corrected_fluxes(double dt) {
 }
 
 StepSize FlowSolver::restart_with_half_dt(StepSize size) {
-    Stopwatch watch(timers_, FlowStage::pressure_faces);
+    Stopwatch watch(timers_, FlowStage::repeat);
     ++counters_.repeated;
     size = {0.5 * size.dt, StepBound::halved};
     state_.Phi = Phi_before_, state_.m = m_start_, state_.u = u_start_, state_.E = E_start_;
@@ -161,7 +162,7 @@ void FlowSolver::transport(double dt) {
 }
 
 void FlowSolver::diffuse_increments(double dt) {
-    Stopwatch watch(timers_, FlowStage::viscosity);
+    Stopwatch watch(timers_, FlowStage::increments);
     const double Phi_vac = settings_.Phi_vacuum;
     mesh_.for_each_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) velocity_change_[b][c] = state_.u[b][c] - u_star_[b][c];

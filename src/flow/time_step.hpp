@@ -1,4 +1,4 @@
-// The time step (docs/flow_solver.md Sect. 2, S1): the smallest of
+// The time step (docs/flow_solver.md Sect. 2, step_size): the smallest of
 //   cfl / max_cells sum_axis max(wave speed over the cell's two faces)/h_axis   (CFL, first-order unsplit),
 //   kOutflowFraction * Phi / (outflow rate)   (Phi stays > 0, T and u_t stay convex combinations),
 //   kCompactionFraction * (Phi_rcp - Phi) / (net inflow rate)   (Phi stays < Phi_rcp, F4),

@@ -68,7 +68,7 @@ struct TumblerFlow : SceneJob {
             }
         };
         sample();
-        advance_flow(solver, t_end, "tumbler-flow", sample);
+        const RunTime cost = advance_flow(solver, t_end, "tumbler-flow", sample);
 
         std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change",
                                          "layer_mean", "layer_std", "inside_cells"};
@@ -76,11 +76,12 @@ struct TumblerFlow : SceneJob {
                                    static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
                                    layer.std_dev(), static_cast<double>(grid.inside_cells())};
         append_flow_work(solver, columns, values);
+        append_run_time(cost, columns, values);
         DataTable summary(columns);
         summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
                         format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
                         "samples; mass_change relative; inside_cells: cells of the drum; steps_X: steps whose dt the bound X "
-                        "set (docs/flow_solver.md, stage S1); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step");
+                        "set (docs/flow_solver.md, stage step_size); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
         summary.row(values);
         out.add("history.dat", history);
         out.add("summary.dat", summary);

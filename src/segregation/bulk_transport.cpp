@@ -1,6 +1,7 @@
 #include "segregation/bulk_transport.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "segregation/reconstruction.hpp"
 
 #include <algorithm>
@@ -10,10 +11,6 @@ namespace granseg {
 
 namespace {
 
-// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
-// flow solver's threshold, flow/flow_solver.cpp): loops run serially.
-constexpr std::size_t kParallelCells = 2048;
-
 void check_face_field(const Grid& grid, int axis, const std::vector<double>& field, const char* what) {
     if (!field.empty() && field.size() != grid.faces(axis))
         throw InputError(std::string("bulk transport: ") + what + " needs one value per face");
@@ -22,7 +19,7 @@ void check_face_field(const Grid& grid, int axis, const std::vector<double>& fie
 }  // namespace
 
 BulkTransport::BulkTransport(Grid grid)
-    : grid_(std::move(grid)), inside_(grid_.cells(), 1), parallel_(grid_.cells() >= kParallelCells) {
+    : grid_(std::move(grid)), inside_(grid_.cells(), 1), parallel_(threads_pay(grid_.cells())) {
     if (!grid_.inside.empty()) inside_ = grid_.inside;
 }
 

@@ -1,19 +1,14 @@
 #include "transport/muscl_hancock.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 #include <algorithm>
 
 namespace granseg {
 
-namespace {
-// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
-// flow solver's threshold): loops run serially.
-constexpr std::size_t kParallelCells = 2048;
-}  // namespace
-
 MusclHancock::MusclHancock(const Grid& grid, Limiter limiter)
-    : h_(grid.h), limiter_(limiter), parallel_(grid.cells() >= kParallelCells) {
+    : h_(grid.h), limiter_(limiter), parallel_(threads_pay(grid.cells())) {
     for (int a = 0; a < 3; ++a) {
         active_[a] = grid.n[a] > 1;
         if (active_[a]) from_lower_[a].assign(grid.faces(a), 0.0), from_upper_[a].assign(grid.faces(a), 0.0);

@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/progress.hpp"
+#include "core/threads.hpp"
 #include "flow/flow_output.hpp"
 #include "segregation/invariants.hpp"
 #include "tumbler/coupled_tables.hpp"
@@ -141,7 +142,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
         sample();
         progress.update(flow.time());
     }
-    progress.finish();
+    const RunTime cost = progress.finish(run_threads(grid.cells()));
     std::vector<std::string> columns{"t_end", "steps", "substeps", "segregation_steps", "angle_mean_deg", "angle_std_deg",
                                      "angle_samples", "mass_small_change", "mass_large_change", "segregation_index", "ring",
                                      "periphery", "core", "initial_mixture", "packing_feedback", "packing_contrast",
@@ -162,6 +163,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     for (double v : {layer.mean(), layer.std_dev(), axis, own.r_core, own.core, own.ring, own.periphery, own.axis, tracer_core,
                       points_core})
         values.push_back(v);
+    append_run_time(cost, columns, values);
     DataTable summary(columns);
     summary.comment("angle: mean over t >= " + format_number(options.run.angle_from) +
                     " s; pattern metrics at t_end (regions r_core " + format_number(options.regions.r_core) + ", r_ring " +
@@ -170,7 +172,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "samples; axis: small-particle share within " + format_number(kAxisShare) +
                     " D of the axis at t_end; *_layer: as history.dat at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options.bin) +
                     " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
-                    "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work");
+                    "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
     summary.row(values);
     out.add("history.dat", history);
     out.add("summary.dat", summary);

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/threads.hpp"
 #include "direction/segregation_direction.hpp"
 #include "direction/segregation_velocity.hpp"
 #include "segregation/invariants.hpp"
@@ -19,10 +20,6 @@ namespace {
 double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
 }
-
-// Below this many cells a loop's work is smaller than the cost of waking a second thread (the
-// flow solver's threshold): loops run serially.
-constexpr std::size_t kParallelCells = 2048;
 
 /// The flow settings with the initial mixture as the uniform phi_hat.
 FlowSettings with_mixture(FlowSettings settings, double mixture) {
@@ -66,7 +63,7 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
       bulk_(flow_.grid()),
       segregation_(flow_.grid(), setup.segregation),
       inside_(flow_.grid().cells(), 1),
-      parallel_(flow_.grid().cells() >= kParallelCells) {
+      parallel_(threads_pay(flow_.grid().cells())) {
     if (!flow_.grid().inside.empty()) inside_ = flow_.grid().inside;
     if (transport_scheme(setup.flow) == Transport::muscl) fct_.emplace(flow_.grid(), setup.flow.limiter);
     if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
@@ -113,6 +110,7 @@ std::vector<double> CoupledTumbler::phi_hat() const {
 }
 
 double CoupledTumbler::step(double t_end) {
+    const SerialScope serial(!parallel_);  // below the crossover Eigen's products run on one thread too
     using clock = std::chrono::steady_clock;
     auto t0 = clock::now();
     const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)

@@ -1,7 +1,7 @@
 // The drum's dynamic angle of repose against resolution, in both time-stepping modes (docs/sect4.2_tumbler.md):
 // the tumbler-flow drum of verification/scenes/tumbler_flow.toml (25 s, angle averaged from 10 s)
-// at kRuns' cells per diameter, modes and dt_max, one after another on OMP_NUM_THREADS threads
-// (default 1). Per run: steps, wall time, the angle's mean and standard deviation over
+// at kRuns' cells per diameter, modes and dt_max: side by side, one per core, on one thread each
+// (the default), or one after another on OMP_NUM_THREADS threads when that is set above 1. Per run: steps, wall time, the angle's mean and standard deviation over
 // t >= angle_from, the flowing layer's mean thickness, the steps repeated with half the dt, the
 // kinetic energy (relative to the drum) over t >= angle_from as min/mean and
 // max/mean (a rolling drum keeps both near 1; a slumping one falls by orders of magnitude between
@@ -23,6 +23,7 @@
 #include "flow/time_step.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
+#include "harness/side_by_side.hpp"
 #include "scenes/material_section.hpp"
 #include "scenes/scene_kind.hpp"
 
@@ -35,6 +36,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -97,6 +99,9 @@ int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
     if (!std::getenv("OMP_NUM_THREADS")) omp_set_num_threads(1);
     const int threads = omp_get_max_threads();
+    // One thread per run: the runs side by side, one per core (the slowest, the 100-cell explicit
+    // run, then sets the study's time); more threads per run: one run after another.
+    const int lanes = threads == 1 ? verify::machine_cores() : 1;
     const toml::table base = toml::parse_file(kScene);
     const double angle_from = base["run"]["angle_from"].value<double>().value();
     const double diameter = base["drum"]["diameter"].value<double>().value();
@@ -104,19 +109,34 @@ int main(int argc, char** argv) {
     DataTable table({"cells", "semi_implicit", "dt_max", "h_mm", "steps", "wall_s", "angle_mean_deg", "angle_std_deg",
                      "ke_min_over_mean", "ke_max_over_mean", "friction_deg", "layer_mm", "steps_halved"});
     table.comment("tumbler-flow drum of " + std::string(kScene) + ", 25 s; angle and kinetic energy over t >= " +
-                  verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s); load average at start " +
+                  verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s) per run, " + std::to_string(lanes) +
+                  " run(s) side by side; load average at start " +
                   verify::load_average());
     table.comment("semi_implicit: 0 explicit, 1 semi-implicit; h = D / cells");
     std::vector<double> h[2], angle[2];  // per mode, dt_max 1 ms: for the first-order extrapolation h -> 0
     double friction = NAN;
     CheckTable checks("Drum angle of repose against resolution, both time-stepping modes (tumbler_flow.toml, 25 s)");
-    for (const Run& r : kRuns) {
-        const std::string tag = std::string(r.mode) + "_" + std::to_string(r.cells) + "_dt" + verify::format(r.dt_max);
-        const std::string dir = options.data_dir + "/drum_angle/" + tag;
-        write_file_atomically(dir + ".toml", scene_text(base, r));
+    auto run_dir = [&](const Run& r) {
+        return options.data_dir + "/drum_angle/" + std::string(r.mode) + "_" + std::to_string(r.cells) + "_dt" +
+               verify::format(r.dt_max);
+    };
+    constexpr int kJobs = static_cast<int>(std::size(kRuns));
+    double walls[kJobs];
+    const auto start = std::chrono::steady_clock::now();
+    verify::run_side_by_side(kJobs, lanes, [&](int j) {
+        const std::string dir = run_dir(kRuns[j]);
+        write_file_atomically(dir + ".toml", scene_text(base, kRuns[j]));
         const auto t0 = std::chrono::steady_clock::now();
         run_scene_file(dir + ".toml", dir);
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        walls[j] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::fprintf(stderr, "bench_drum_angle: %s done in %.0f s\n", dir.c_str(), walls[j]);
+    });
+    checks.note("all runs: " + verify::format(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
+                " s wall");
+    for (int j = 0; j < kJobs; ++j) {
+        const Run& r = kRuns[j];
+        const std::string dir = run_dir(r), tag = dir.substr(dir.rfind('/') + 1);
+        const double wall = walls[j];
 
         const Material m = read_material(SceneFile::load(dir + ".toml"));
         friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
@@ -127,7 +147,6 @@ int main(int argc, char** argv) {
         const double h_mm = 1e3 * diameter / r.cells;
         table.row({double(r.cells), is_explicit ? 0.0 : 1.0, r.dt_max, h_mm, s[1], wall, s[2], s[3], history.ke_min,
                    history.ke_max, friction, 1e3 * s[6], s[8 + static_cast<int>(StepBound::halved)]});
-        verify::write_data(options, "bench_drum_angle.dat", table);  // after every run: a long study keeps what it has
         checks.note(tag + ": " + verify::format(s[1]) + " steps, " + verify::format(wall) + " s wall; angle " +
                     verify::format(s[2]) + " +- " + verify::format(s[3]) + " deg (friction angle " + verify::format(friction) +
                     "); layer " + verify::format(1e3 * s[6]) + " mm; kinetic energy min/mean " + verify::format(history.ke_min) +

@@ -30,14 +30,17 @@
 #include "harness/fig7_study.hpp"
 #include "harness/fig7_work.hpp"
 #include "harness/program.hpp"
+#include "harness/side_by_side.hpp"
 #include "scenes/tumbler.hpp"
 
 #include <boost/program_options.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cstdio>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 
 using namespace granseg;
@@ -121,6 +124,7 @@ Fig7Options parse(int argc, char** argv) {
         "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
         "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs")(
         "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
+        "lanes", po::value(&o.lanes)->default_value(o.lanes), "runs side by side, one thread each (0: one per core)")(
         "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
     po::variables_map vm;
     try {
@@ -147,6 +151,9 @@ Fig7Options parse(int argc, char** argv) {
         bad_option("jitter-window", fig7_number(o.jitter_window), "0 < jitter_window <= t_end");
     if (!(o.T_floor_low > 0.0 && o.T_floor_low < 1e-2)) bad_option("T-floor-low", fig7_number(o.T_floor_low), "0 < T < 0.01");
     if (o.threads < 1 || o.threads > 256) bad_option("threads", std::to_string(o.threads), "1..256");
+    if (o.lanes == 0) o.lanes = o.threads == 1 ? verify::machine_cores() : 1;
+    if (o.lanes < 1 || o.lanes > 256 || (o.lanes > 1 && o.threads != 1))
+        bad_option("lanes", std::to_string(o.lanes), "0..256, and 1 unless --threads 1");
     return o;
 }
 
@@ -156,18 +163,24 @@ int main(int argc, char** argv) {
     verify::parse_program_options(1, argv);  // only for its handling of the library's errors (exit 2, 3)
     const Fig7Options o = parse(argc, argv);
     const std::vector<Fig7Run> plan = plan_fig7_runs(o);
-    std::printf("bench_fig7_convergence: %zu runs of verification/scenes/tumbler.toml, t_end %g s, %d threads%s\n",
-                plan.size(), o.t_end, o.threads, o.reuse ? ", reusing unchanged runs" : "");
-    std::vector<Fig7Result> results;
-    for (const Fig7Run& run : plan) {
-        results.push_back(run_fig7(run, o));
-        const Fig7Result& r = results.back();
+    std::printf("bench_fig7_convergence: %zu runs of verification/scenes/tumbler.toml, t_end %g s, %d thread(s) each, "
+                "%d side by side%s\n",
+                plan.size(), o.t_end, o.threads, o.lanes, o.reuse ? ", reusing unchanged runs" : "");
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Fig7Result> results(plan.size());
+    std::mutex print;
+    verify::run_side_by_side(static_cast<int>(plan.size()), o.lanes, [&](int j) {
+        const Fig7Run& run = plan[j];
+        results[j] = run_fig7(run, o);
+        const Fig7Result& r = results[j];
+        const std::lock_guard<std::mutex> lock(print);
         std::printf("run %-22s %8.1f s wall (%.1f s CPU), %7.0f steps: angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, periphery %.4f, "
                     "core %.4f, contrast %.4f, axis %.4f\n",
                     run.name.c_str(), r.wall, r.cpu, r.steps, r.value[0], r.value[1], r.value[2], r.value[3], r.value[4], r.value[5],
                     r.value[6], r.value[7]);
         std::fflush(stdout);
-    }
+    });
+    std::printf("all runs: %.1f s wall\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const Fig7Analysis analysis = analyse_fig7(std::move(results), o);
     write_fig7_convergence(analysis, o);
     const std::vector<std::string> answers = write_fig7_work(analysis, o);

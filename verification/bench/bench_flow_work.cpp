@@ -7,7 +7,7 @@
 //                 n x n cells, n = 16 .. 128: mean |error| of Phi, u, T at t_end. The explicit
 //                 step is bound by the sound speed (c dt/h ~ 0.5); the semi-implicit step by
 //                 dt_max = k h, k = 0.25, 1, 4 s/m (c dt/h ~ 2.3, 9, 36 at c = 9.1 m/s) or by
-//                 its own bounds (docs/flow_solver.md Sect. 2, S1), since its error against its
+//                 its own bounds (docs/flow_solver.md Sect. 2, step_size), since its error against its
 //                 cost depends on dt; its cfl on |u| does not bind (|u| <= 0.075 m/s);
 //   incline       the layer on the inclined plane of verify_flow_incline (harness/incline_flow.hpp),
 //                 nz = 16 .. 128 cells: the profiles after 2 s at the solver's own critical angle

@@ -45,7 +45,8 @@ struct Fig7Options {
     double t_end = 25.0, average_from = 10.0;    // s; the angle and layer are averaged over t >= average_from
     double jitter_window = 2.5;                  // s before t_end over which a value at t_end jitters
     double T_floor_low = 1e-14;                  // m^2/s^2, the floor run's T_floor
-    int threads = 2;
+    int threads = 1;                             // OpenMP threads of every run
+    int lanes = 0;                               // runs side by side (0: one per core; > 1 needs threads = 1)
     bool reuse = false;                          // reuse a run whose scene text is unchanged
 
     /// dt_max of a run at `cells` with the dt study's factor.
