@@ -225,7 +225,7 @@ DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig
 
 # The Fig. 7 study's figures come from a benchmark: drawn when its data is there (make bench
 # BENCH=bench_fig7_convergence), else left as they are.
-DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work
+DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work bench_drum_shapes
 
 docs-figures: deps
 	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)

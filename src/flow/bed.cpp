@@ -3,24 +3,36 @@
 #include "closures/closures.hpp"
 #include "core/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granseg {
 
-Grid drum_grid(int n, double R, int ny, double ly) {
-    if (n < 4 || ny < 1 || !(R > 0) || !(ly > 0)) throw InputError("drum_grid: need n >= 4, ny >= 1, R > 0");
+Grid drum_grid(const DrumShape& shape, int n, int ny, double ly) {
+    if (n < 4 || ny < 1 || !(ly > 0)) throw InputError("drum_grid: need n >= 4, ny >= 1, ly > 0");
+    const double R = shape.radius();
     Grid g = Grid::plane_xz(n, n, -R, -R, 2 * R, 2 * R);
+    if (shape.kind() != DrumShapeKind::circle) {
+        const double h = 2 * R / n;
+        // Whole cells over the extent (the 1e-9 keeps an extent of exactly m cells at m).
+        const auto cells = [h](double length) { return std::max(1, static_cast<int>(std::ceil(length / h - 1e-9))); };
+        const int nx = cells(2 * shape.half_width()), nz = cells(shape.highest() - shape.lowest());
+        const double z_mid = 0.5 * (shape.lowest() + shape.highest());
+        g = Grid::plane_xz(nx, nz, -0.5 * nx * h, z_mid - 0.5 * nz * h, nx * h, nz * h);
+    }
     g.n[1] = ny;
     g.h[1] = ny > 1 ? ly / ny : 1.0;
     g.periodic[1] = ny > 1;
     g.inside.assign(g.cells(), 0);
-    for (int k = 0; k < n; ++k)
+    for (int k = 0; k < g.n[2]; ++k)
         for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < n; ++i) {
-                const double x = g.center(0, i), z = g.center(2, k);
-                g.inside[g.index(i, j, k)] = x * x + z * z < R * R ? 1 : 0;
-            }
+            for (int i = 0; i < g.n[0]; ++i) g.inside[g.index(i, j, k)] = shape.inside(g.center(0, i), g.center(2, k)) ? 1 : 0;
     return g;
+}
+
+Grid drum_grid(int n, double R, int ny, double ly) {
+    if (!(R > 0)) throw InputError("drum_grid: need n >= 4, ny >= 1, R > 0");
+    return drum_grid(DrumShape::circle(R), n, ny, ly);
 }
 
 double volume_fraction_at_pressure(const Material& m, double p, double T, double Phi_rcp, double Phi_co) {

@@ -1,23 +1,29 @@
-// Geometry and initial states of granular beds for the flow scenes: the circular drum of
-// Sect. 4.2 as embedded walls, and a bed at rest in the static (lithostatic) balance
+// Geometry and initial states of granular beds for the flow scenes: a drum (the circle of
+// Sect. 4.2, or any core/drum_shape.hpp cross-section) as embedded walls, and a bed at rest in the static (lithostatic) balance
 // dp/dz = -Phi |g| with p = p(Phi, T) from eqs. (15)-(19) (docs/assumptions.md F6).
 //
 //   solves      the lithostatic balance dp/dz = -Phi(p) |g| column by column (RK4), and p(Phi) = p
-//   inputs      drum: cells, radius; bed: Grid, Material, surface height, |g|, T, Phi_rcp, Phi_co
+//   inputs      drum: its shape, cells across its diameter; bed: Grid, Material, surface height, |g|, T, Phi_rcp, Phi_co
 //   outputs     the drum's Grid (inside flags); Phi per cell of the bed at rest
 //   invariants  0 <= Phi < Phi_rcp; cells above the surface are empty
 #pragma once
 
 #include "closures/material.hpp"
+#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
 
 #include <vector>
 
 namespace granseg {
 
-/// A grid of n x n cells (times ny periodic cells along y of length ly; ny = 1: the x-z plane)
-/// covering the square around a drum of radius R centred at the origin; cells whose centre
-/// lies inside the circle are inside, the rest are walls (a staircase circle).
+/// The drum `shape` (axis at the origin) on square cells of side 2R/n, R = shape.radius() (times
+/// ny periodic cells along y of length ly; ny = 1: the x-z plane): cells whose centre lies inside
+/// the shape are inside, the rest are walls (a staircase shape). A circle gets the n x n cells of
+/// [-R, R]^2; another shape the whole cells that cover its extent, placed symmetrically about
+/// x = 0 (a shape symmetric under x -> -x gets a mirror-symmetric grid).
+Grid drum_grid(const DrumShape& shape, int n, int ny = 1, double ly = 1.0);
+
+/// The circular drum of radius R: drum_grid(DrumShape::circle(R), n, ny, ly).
 Grid drum_grid(int n, double R, int ny = 1, double ly = 1.0);
 
 /// Volume fraction at pressure p >= 0 and temperature T: the inverse of p(Phi) of eqs. (15)-(19)

@@ -131,7 +131,7 @@ void append_run_time(const RunTime& cost, std::vector<std::string>& columns, std
     for (double v : {cost.wall, cost.cpu, static_cast<double>(cost.threads)}) values.push_back(v);
 }
 
-DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, double v_flow) {
+DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, double v_flow, const DrumShape* shape) {
     const Grid& g = s.grid();
     const Frame& f = s.frame();
     DrumState d{};
@@ -148,12 +148,13 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
                 if ((p0 - Phi_level) * (p1 - Phi_level) >= 0.0 || p0 == p1) continue;
                 const double w = (Phi_level - p0) / (p1 - p0);
                 const double x = g.center(0, i) + (a == 0 ? w * g.h[0] : 0.0), z = g.center(2, k) + (a == 2 ? w * g.h[2] : 0.0);
-                if (std::hypot(x - f.x_c, z - f.z_c) < radius) points.push_back({x, z});
+                const double r = shape ? shape->gauge(x - f.x_c, z - f.z_c) : std::hypot(x - f.x_c, z - f.z_c);
+                if (r < radius) points.push_back({x, z});
             }
         }
     d.surface_points = static_cast<int>(points.size());
     d.surface_angle_deg = NAN;
-    d.surface_distance = NAN;
+    d.surface_distance = d.surface_offset = d.surface_direction = NAN;
     if (points.size() >= 2) {
         double mx = 0, mz = 0;
         for (const auto& p : points) mx += p[0], mz += p[1];
@@ -161,7 +162,9 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         double sxx = 0, sxz = 0, szz = 0;
         for (const auto& p : points) sxx += (p[0] - mx) * (p[0] - mx), sxz += (p[0] - mx) * (p[1] - mz), szz += (p[1] - mz) * (p[1] - mz);
         const double theta = 0.5 * std::atan2(2 * sxz, sxx - szz);  // principal direction of the points
-        d.surface_distance = std::fabs(-(mx - f.x_c) * std::sin(theta) + (mz - f.z_c) * std::cos(theta));
+        d.surface_offset = -(mx - f.x_c) * std::sin(theta) + (mz - f.z_c) * std::cos(theta);
+        d.surface_distance = std::fabs(d.surface_offset);
+        d.surface_direction = theta;
         const Vec3 gv = f.gravity_at(s.time());
         const double horizontal = std::atan2(gv[0], -gv[2]);  // direction of g rotated by +90 degrees
         double angle = theta - horizontal;

@@ -18,6 +18,10 @@ namespace granseg {
 
 namespace {
 
+/// Cells across a polygon drum's inscribed circle, at least: the circle's own minimum, 8 cells
+/// across the diameter (the smallest [drum] cells_per_diameter).
+constexpr double kMinInscribedCells = 8.0;
+
 struct TumblerFlow : SceneJob {
     Material material;
     FlowSettings settings;
@@ -28,6 +32,7 @@ struct TumblerFlow : SceneJob {
 
     OutputSet run() override {
         const Grid grid = drum.grid();
+        const DrumShape shape = drum.cross_section();
         FlowSolver solver(grid, material, settings, drum.frame());
         const std::vector<double> zero(grid.cells(), 0.0), T(grid.cells(), settings.T_floor);
         solver.set_state(drum_bed_at_rest(drum, grid, material, settings.phi_hat, settings.T_floor), {zero, zero, zero}, T);
@@ -37,7 +42,7 @@ struct TumblerFlow : SceneJob {
         DataTable history({"t", "steps", "surface_angle_deg", "surface_points", "flowing_fraction", "max_speed",
                            "kinetic_energy", "mass", "mass_change", "dt", "layer_thickness"});
         history.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level) +
-                        " contour within 0.8 R; flowing = |u| > " + format_number(v_flow) +
+                        " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8); flowing = |u| > " + format_number(v_flow) +
                         " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
         OutputSet out;
         TimeAverage angle(run_options.angle_from), layer(run_options.angle_from);  // time averages from angle_from
@@ -47,8 +52,8 @@ struct TumblerFlow : SceneJob {
         auto sample = [&] {
             if (solver.time() >= next_history - 1e-12 || solver.time() >= t_end) {
                 next_history += kDrumHistoryInterval;
-                const DrumState d = drum_state(solver, Phi_level, 0.8 * drum.radius(), v_flow);
-                const double thickness = flowing_layer_thickness(d, drum.radius());
+                const DrumState d = drum_state(solver, Phi_level, 0.8 * drum.radius(), v_flow, &shape);
+                const double thickness = flowing_layer_thickness(d, shape);
                 angle.add(solver.time(), d.surface_angle_deg);
                 layer.add(solver.time(), thickness);
                 history.row({solver.time(), static_cast<double>(solver.steps()), d.surface_angle_deg,
@@ -86,6 +91,26 @@ struct TumblerFlow : SceneJob {
     }
 };
 
+/// [drum] shape, sides, orientation; a polygon needs kMinInscribedCells across its inscribed circle.
+void read_drum_shape(const SceneFile& scene, DrumSpec& d) {
+    const std::string s = "drum";
+    const bool polygon = scene.choice(s, "shape", {"circle", "polygon"}, "circle") == "polygon";
+    if (!polygon) {
+        for (const char* key : {"sides", "orientation"})
+            if (scene.has(s, key)) scene.fail(s, key, "given for shape = \"circle\"", "only with shape = \"polygon\"");
+        return;
+    }
+    d.shape = DrumShapeKind::polygon;
+    d.sides = static_cast<int>(scene.integer(s, "sides", 3, 1000));
+    d.orientation = scene.number(s, "orientation", Range::closed(-360, 360), d.orientation);
+    const double across = d.cells_per_diameter * std::cos(M_PI / d.sides);  // cells across the inscribed circle
+    if (across < kMinInscribedCells)
+        scene.fail(s, "cells_per_diameter",
+                   std::to_string(d.cells_per_diameter) + " cells leave " + format_number(across, 3) +
+                       " across the polygon's inscribed circle, its smallest feature",
+                   "cells_per_diameter >= " + std::to_string(static_cast<int>(std::ceil(kMinInscribedCells / std::cos(M_PI / d.sides)))));
+}
+
 }  // namespace
 
 DrumSpec read_drum(const SceneFile& scene) {
@@ -93,7 +118,16 @@ DrumSpec read_drum(const SceneFile& scene) {
     DrumSpec d;
     d.diameter = scene.number(s, "diameter", Range::above(0), d.diameter);
     d.cells_per_diameter = static_cast<int>(scene.integer(s, "cells_per_diameter", 8, 2000, d.cells_per_diameter));
-    d.fill_height = scene.number(s, "fill_height", Range::open(0, d.diameter), 0.75 * d.diameter);
+    read_drum_shape(scene, d);
+    const DrumShape shape = d.cross_section();
+    const double height = shape.highest() - shape.lowest(), h = d.diameter / d.cells_per_diameter;
+    d.fill_height = scene.number(s, "fill_height", Range::open(0, height), 0.75 * height);
+    // A bed and a space above it, each at least two cells deep, so the surface has cells on both sides.
+    if (!(d.fill_height >= 2 * h && height - d.fill_height >= 2 * h))
+        scene.fail(s, "fill_height", format_number(d.fill_height) + " m leaves " +
+                                         (d.fill_height < 2 * h ? "less than two cells of bed" : "less than two cells of space above the bed"),
+                   format_number(2 * h) + " <= fill_height <= " + format_number(height - 2 * h) + " (two cells of " +
+                       format_number(h) + " m below and above the surface)");
     d.rps = scene.number(s, "rps", Range::closed(-100, 100), d.rps);
     d.axial_cells = static_cast<int>(scene.integer(s, "axial_cells", 1, 1000, 1));
     d.axial_length = scene.number(s, "axial_length", Range::above(0), d.axial_cells * d.diameter / d.cells_per_diameter);

@@ -37,14 +37,16 @@ std::string numbered(const char* pattern, int n) {
 }  // namespace
 
 PatternRegions coupled_regions(const DrumSpec& drum, double bed_level) {
-    PatternRegions r = drum_regions(drum.surface_height(), kLayerShare * drum.diameter, drum.radius());
+    PatternRegions r = drum_regions(closest_surface_distance(drum), kLayerShare * drum.diameter, drum.radius());
     r.bed_level = bed_level;
+    r.shape = drum.cross_section();
     return r;
 }
 
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,
                               const CoupledStepObserver& observer) {
     const DrumSpec& drum = tumbler.setup().drum;
+    const DrumShape shape = drum.cross_section();
     const FlowSolver& flow = tumbler.flow();
     const Grid& grid = tumbler.grid();
     const double t_end = options.run.t_end, level = options.regions.bed_level, v_flow = drum.flowing_speed();
@@ -66,7 +68,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
                     "relative to the whole amount at t = 0, sum of Phi); "
                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
                     format_number(level) + "; surface angle: fit of the Phi = " + format_number(level) +
-                    " contour within 0.8 R (drum frame); flowing = |u_rel| > " + format_number(v_flow) +
+                    " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8; drum frame); flowing = |u_rel| > " + format_number(v_flow) +
                     " m/s; layer_thickness: area of the flowing bed over the surface's chord (m); axis: small-particle "
                     "share within " + format_number(kAxisShare) + " D of the axis; packing_contrast: Fig. 7d "
                     "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
@@ -80,7 +82,7 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     TimeAverage angle(options.run.angle_from), layer(options.run.angle_from);  // time averages from angle_from
     BoundsMonitor bounds;
     double small_change = 0, large_change = 0, surface_angle = 0, axis = 0;
-    const LayerRegions own_regions(grid, drum.surface_height(), drum.radius(), kAxisShare * drum.diameter);
+    const LayerRegions own_regions(grid, closest_surface_distance(drum), drum.radius(), kAxisShare * drum.diameter);
     LayerRegionShares own;
     double tracer_core = NAN, points_core = NAN;
     std::optional<MaterialPoints> points;
@@ -104,9 +106,9 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
             if (!(std::fabs(large_change) <= kTumblerMassTolerance))
                 throw InvariantError("tumbler: the amount of large particles changed by " + format_number(large_change, 3) +
                                      " (relative to all material) by t = " + format_number(flow.time()) + " s");
-            const DrumState d = drum_state(flow, level, 0.8 * drum.radius(), v_flow);
+            const DrumState d = drum_state(flow, level, 0.8 * drum.radius(), v_flow, &shape);
             surface_angle = d.surface_angle_deg;
-            const double thickness = flowing_layer_thickness(d, drum.radius());
+            const double thickness = flowing_layer_thickness(d, shape);
             angle.add(flow.time(), surface_angle);
             layer.add(flow.time(), thickness);
             metrics = pattern_metrics(grid, tumbler.phi(), flow.Phi(), options.regions, hat0);

@@ -16,7 +16,20 @@ Frame DrumSpec::frame() const {
     return f;
 }
 
-Grid DrumSpec::grid() const { return drum_grid(cells_per_diameter, radius(), axial_cells, axial_length); }
+DrumShape DrumSpec::cross_section() const {
+    return shape == DrumShapeKind::circle ? DrumShape::circle(radius()) : DrumShape::polygon(sides, radius(), orientation * M_PI / 180.0);
+}
+
+Grid DrumSpec::grid() const { return drum_grid(cross_section(), cells_per_diameter, axial_cells, axial_length); }
+
+double closest_surface_distance(const DrumSpec& drum) {
+    const DrumShape shape = drum.cross_section();
+    if (shape.kind() == DrumShapeKind::circle) return drum.surface_height();
+    const double bed = shape.area_below(drum.surface_height(), 0.0);
+    double closest = INFINITY;
+    for (int step = 0; step < 720; ++step) closest = std::min(closest, shape.surface_offset(bed, step * M_PI / 360.0));
+    return closest;
+}
 
 std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat,
                                      double T) {

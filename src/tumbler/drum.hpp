@@ -1,14 +1,16 @@
 // The drum of Sect. 4.2 as the flow solver sees it, shared by the scene kinds tumbler-flow (flow
-// alone) and tumbler (flow and segregation coupled): the geometry and rotation, the bed at rest
-// it starts from (docs/assumptions.md F6, F8), and the dynamic angle of repose.
+// alone) and tumbler (flow and segregation coupled): the geometry and rotation (a circle, or a
+// regular polygon: core/drum_shape.hpp, docs/drum_shapes.md), the bed at rest it starts from
+// (docs/assumptions.md F6, F8), and the dynamic angle of repose.
 //
 //   solves      nothing over time: the drum's geometry and the bed at rest it starts from
-//   inputs      DrumSpec (diameter, cells, fill height, rotation), the material, phi_hat
+//   inputs      DrumSpec (shape, diameter, cells, fill height, rotation), the material, phi_hat
 //   outputs     the grid, each cell's filled share and lithostatic Phi; the mean angle of repose
 //   invariants  the bed at rest lies below its own Phi_rcp(phi_hat) in every cell (assumption C3)
 #pragma once
 
 #include "closures/material.hpp"
+#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
 #include "flow/flow_solver.hpp"
 
@@ -19,25 +21,36 @@ namespace granseg {
 
 /// Geometry and rotation of the drum (keys of the [drum] section, docs/scenes.md).
 struct DrumSpec {
-    double diameter = 0.1;        // m
+    double diameter = 0.1;        // m, of the circle (a polygon: of the circle through its corners)
     int cells_per_diameter = 100;
-    double fill_height = 0.075;   // m, flat initial surface above the drum's bottom
+    double fill_height = 0.075;   // m, flat initial surface above the drum's lowest point
+    DrumShapeKind shape = DrumShapeKind::circle;
+    int sides = 4;                // a polygon's sides (>= 3)
+    double orientation = 0.0;     // degrees a polygon is turned counter-clockwise from a side at the bottom
     double rps = 0.1;             // revolutions per second, counter-clockwise as plotted
     int axial_cells = 1;          // 1: the x-z cross-section; more: a periodic slab along y
     double axial_length = 0.001;  // m
     double gravity = 9.81;        // |g|, m/s^2
 
     double radius() const { return 0.5 * diameter; }
+    /// The cross-section in the drum frame at t = 0 (axis at the origin).
+    DrumShape cross_section() const;
     /// The drum frame: gravity, rotation at 2 pi rps about the drum axis through the origin.
     Frame frame() const;
-    /// The staircase drum on a cells_per_diameter^2 grid (flow/bed.hpp drum_grid).
+    /// The staircase drum on cells of side diameter/cells_per_diameter (flow/bed.hpp drum_grid).
     Grid grid() const;
     /// Height of the flat initial surface above the drum's centre.
-    double surface_height() const { return fill_height - radius(); }
+    double surface_height() const { return cross_section().lowest() + fill_height; }
     /// Speed relative to the drum above which material counts as flowing: 5 % of the wall speed
     /// (0 for a drum at rest, whose flowing share and layer drum_state then reports as NaN).
     double flowing_speed() const { return 0.05 * std::fabs(2.0 * M_PI * rps) * radius(); }
 };
+
+/// The smallest signed distance of the free surface from the axis (above it > 0) over a turn of
+/// the drum: the flat surface over a bed of the area at rest (the shape below the fill height) at
+/// each angle of the drum to gravity, sampled every half degree. A circle: surface_height() (the
+/// same at every angle); a centrally symmetric shape half full: 0.
+double closest_surface_distance(const DrumSpec& drum);
 
 /// The free surface of the diagnostics is the level Phi = Phi_co(phi_hat)/2, half-way between
 /// the empty drum and the loosest bed of the mixture (flow_output.hpp drum_state).

@@ -17,7 +17,7 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         const std::size_t c = b.c;
         if (!(Phi[c] > regions.bed_level)) return;
         const double r = std::hypot(b.x, b.z);  // distance from the drum centre
-        const int region = r < regions.r_core ? 0 : r < regions.r_ring ? 1 : r >= regions.r_periphery ? 2 : -1;
+        const int region = r < regions.r_core ? 0 : r < regions.r_ring ? 1 : regions.shape.gauge(b.x, b.z) >= regions.r_periphery ? 2 : -1;
         const double phi_hat = composition(phi[c], Phi[c]);
         if (region >= 0) small[region] += phi[c], all[region] += Phi[c];
         if (region == 0) m.core_deviation = std::max(m.core_deviation, std::fabs(phi_hat - phi_hat_initial[c]));

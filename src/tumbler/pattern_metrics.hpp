@@ -5,13 +5,15 @@
 // Regions, by the distance r of a bed-cell centre from the drum centre (inertial frame):
 //   core       r < r_core:              solid-body streamlines that never reach the flowing layer
 //   ring       r_core <= r < r_ring:    the streamlines just below the layer's deepest point
-//   periphery  r >= r_periphery:        next to the drum wall
+//   periphery  g >= r_periphery:        next to the drum wall, g the cell centre's gauge in the drum's
+//                                       shape (DrumShape::gauge; for a circle g = r)
 // Each region's small-particle fraction is sum(phi)/sum(Phi) over its bed cells (the mass-weighted
 // phi_hat). The segregation index is the standard deviation of phi_hat over the bed (cell
 // weighted) divided by sqrt(m (1 - m)), m the mean: 0 for any uniform mixture, 1 for a bed split
 // into pure small and pure large cells (Danckwerts' intensity of segregation).
 #pragma once
 
+#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
 
 #include <vector>
@@ -21,6 +23,7 @@ namespace granseg {
 struct PatternRegions {
     double r_core = 0, r_ring = 0, r_periphery = 0;  // m
     double bed_level = 0;                             // a bed cell has Phi > bed_level
+    DrumShape shape = DrumShape::circle(1.0);         // whose gauge places the periphery (a circle: r, any radius)
 };
 
 /// The regions of a drum of radius R whose free surface passes at distance d from the centre, on

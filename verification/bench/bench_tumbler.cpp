@@ -71,21 +71,6 @@ double run_timed(const std::string& scene, const std::string& dir) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// The last row of a data file as column name -> value.
-std::map<std::string, double> last_row(const std::string& path) {
-    std::ifstream in(path);
-    std::string line, header, last;
-    std::getline(in, header);
-    while (std::getline(in, line))
-        if (!line.empty() && line[0] != '#') last = line;
-    std::istringstream names(header.substr(1)), values(last);
-    std::map<std::string, double> row;
-    std::string name;
-    double v;
-    while (names >> name && values >> v) row[name] = v;
-    return row;
-}
-
 /// The scene `path` with [flow] time_stepping = "explicit", written next to `dir` as dir.toml;
 /// returns that path.
 std::string explicit_scene(const std::string& path, const std::string& dir) {
@@ -113,7 +98,7 @@ void write_modes(const verify::ProgramOptions& options, const std::vector<std::p
                   "cell and step from the median wall time; shares of the timed stages");
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const auto& [walls, dir] = modes[m];
-        const auto s = last_row(dir + "/summary.dat");
+        const auto s = verify::last_row(dir + "/summary.dat");
         const double steps = s.at("steps"), solves = std::max(1.0, s.at("pressure_solves"));
         double staged = 0.0;
         for (int k = 0; k < kFlowStages; ++k) staged += s.at(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
@@ -176,7 +161,7 @@ int main(int argc, char** argv) {
     t.note("median wall time of " + std::to_string(kRuns) + " runs: tumbler-flow " + verify::format(verify::median(flow)) +
            " s, tumbler " + verify::format(verify::median(coupled)) + " s");
     t.at_most("wall time tumbler / tumbler-flow (medians)", ratio, kRatio);
-    const auto on = last_row(dir + "/tumbler/summary.dat"), off = last_row(dir + "/tumbler_no_feedback/summary.dat");
+    const auto on = verify::last_row(dir + "/tumbler/summary.dat"), off = verify::last_row(dir + "/tumbler_no_feedback/summary.dat");
     const double cell_steps = on.at("steps") * on.at("inside_cells");
     t.note("coupling cost in the last coupled run: bulk transport " + verify::format(1e9 * on.at("seconds_bulk") / cell_steps) +
            " ns, segregation sub-steps " + verify::format(1e9 * on.at("seconds_segregation") / cell_steps) +
@@ -185,7 +170,7 @@ int main(int argc, char** argv) {
            verify::format(on.at("substeps")) + " segregation sub-steps of " +
            verify::format(1e9 * on.at("seconds_segregation") / (on.at("substeps") * on.at("inside_cells"))) + " ns per cell");
 
-    const auto kinematic = last_row(dir + "/tumbler_kinematic/tumbler_metrics.dat");
+    const auto kinematic = verify::last_row(dir + "/tumbler_kinematic/tumbler_metrics.dat");
     DataTable pattern({"drum", "segregation_index", "ring", "periphery", "core"});
     pattern.comment("pattern metrics after 25 s (pattern_metrics.hpp): drum 0 = coupled (tumbler), 1 = coupled without "
                     "packing feedback, 2 = kinematic (tumbler-kinematic)");

@@ -82,6 +82,26 @@ std::string load_average() {
     return one + " " + five + " " + fifteen;
 }
 
+std::map<std::string, double> last_row_of(const std::string& text) {
+    std::istringstream in(text);
+    std::string line, header, last;
+    std::getline(in, header);
+    while (std::getline(in, line))
+        if (!line.empty() && line[0] != '#') last = line;
+    std::istringstream names(header.substr(std::min<std::size_t>(1, header.size()))), values(last);
+    std::map<std::string, double> row;
+    std::string name, value;
+    while (names >> name && values >> value) row[name] = std::strtod(value.c_str(), nullptr);  // reads nan and inf too
+    return row;
+}
+
+std::map<std::string, double> last_row(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return last_row_of(text.str());
+}
+
 std::vector<std::vector<double>> read_rows(const std::string& path) {
     std::ifstream in(path);
     std::vector<std::vector<double>> out;

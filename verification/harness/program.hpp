@@ -5,6 +5,7 @@
 #include "core/output.hpp"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ ProgramOptions parse_program_options(int argc, char** argv);
 
 /// The rows of a data file a program wrote (comment lines and blank lines skipped).
 std::vector<std::vector<double>> read_rows(const std::string& path);
+
+/// The last row of a table (DataTable text: "# name ..." first, then comments and rows) as
+/// column name -> value (nan and inf included); last_row reads it from the file at `path`.
+std::map<std::string, double> last_row_of(const std::string& text);
+std::map<std::string, double> last_row(const std::string& path);
 
 /// Writes `table` to DIR/name (atomically, see core/output.hpp).
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table);
