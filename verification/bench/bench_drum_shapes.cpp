@@ -1,8 +1,9 @@
 // The drums of other cross-sections at the resolution their page shows (docs/drum_shapes.md): the
 // half-filled square drum and the triangular drum (verification/scenes/drum_square.toml,
 // drum_triangle.toml; the whole model, three turns, 60 cells across the circle through the
-// corners), each run once on 2 OpenMP threads (or OMP_NUM_THREADS), with its wall time, steps,
-// inside cells and the pattern's measures at t_end.
+// corners), each run once with the threads the run's own rule gives it (core/threads.hpp: one
+// thread on grids below the crossover), with its wall time, CPU time, steps, inside cells and the
+// pattern's measures at t_end.
 // Writes DIR/drum_square and DIR/drum_triangle (the scenes' files: history, summary, frames for
 // figures/bench_drum_shapes.gp and bench_drum_shapes_animation.gp) and drum_shapes.md, the table
 // docs/drum_shapes.md shows (docs/checked_pages.md, generated tables). A few minutes:
@@ -13,11 +14,9 @@
 #include "harness/program.hpp"
 #include "scenes/scene_kind.hpp"
 
-#include <omp.h>
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 using namespace granseg;
@@ -34,8 +33,6 @@ constexpr Scene kScenes[] = {{"drum_square", "square, half full"}, {"drum_triang
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    const int threads = std::getenv("OMP_NUM_THREADS") ? omp_get_max_threads() : 2;
-    omp_set_num_threads(threads);
     const std::string load_before = verify::load_average();
     std::string md = "| drum | inside cells | flow steps | wall time | angle of repose | segregation index | periphery | axis |\n"
                      "|---|---|---|---|---|---|---|---|\n";
@@ -50,8 +47,8 @@ int main(int argc, char** argv) {
                       r.at("inside_cells"), r.at("steps"), wall, r.at("angle_mean_deg"), r.at("segregation_index"),
                       r.at("periphery"), r.at("axis"));
         md += line;
-        std::printf("%s: %.1f s wall on %d threads, %.0f steps, %.0f inside cells\n", s.name, wall, threads, r.at("steps"),
-                    r.at("inside_cells"));
+        std::printf("%s: %.1f s wall, %.1f s CPU on %.0f thread(s), %.0f steps, %.0f inside cells\n", s.name, wall,
+                    r.at("cpu_seconds"), r.at("threads"), r.at("steps"), r.at("inside_cells"));
         std::fflush(stdout);
     }
     write_file_atomically(options.data_dir + "/drum_shapes.md", md);
