@@ -223,20 +223,22 @@ DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig
                fig5_region_c_example fig6a_profiles fig6b_closeup fig7b_kinematic \
                fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic
 
-# The Fig. 7 study's figures come from a benchmark: drawn when its data is there (make bench
-# BENCH=bench_fig7_convergence), else left as they are.
-DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work bench_drum_shapes
+# The Fig. 7 study's figures come from a benchmark, Fig. 7c/7d at 100 cells from make fig7's run:
+# drawn when their data is there (make bench BENCH=bench_fig7_convergence, make fig7), else left as
+# they are.
+DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work full_fig7c_tumbler full_fig7d_tumbler bench_drum_shapes
 
 docs-figures: deps
 	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)
 	@$(MAKE) --no-print-directory $(PAR) -O $(DOC_FIGURES:%=$(BUILD)/figures/%.png)
 	@drawn="$(DOC_FIGURES)"; \
 	for f in $(DOC_BENCH_FIGURES); do \
-	  if [ -f $(BUILD)/bench-data/$$(sed -n 's/^# reads: *\([^ ]*\).*/\1/p' figures/$$f.gp) ]; then drawn="$$drawn $$f"; \
+	  first=$$(sed -n 's/^# reads: *\([^ ]*\).*/\1/p' figures/$$f.gp); \
+	  if [ -f $(BUILD)/bench-data/$$first ] || [ -f $(RUNS)/$$first ]; then drawn="$$drawn $$f"; \
 	  else echo "docs-figures: $$f kept (its benchmark has not run)"; fi; \
 	done; \
 	for f in $$drawn; do \
-	  gnuplot -e "datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
+	  gnuplot -e "datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; rundir='$(RUNS)'; outfile='docs/figures/$$f.png.tmp'; small=1" figures/$$f.gp \
 	    && mv docs/figures/$$f.png.tmp docs/figures/$$f.png && echo "docs-figures: docs/figures/$$f.png" \
 	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
 	done; \

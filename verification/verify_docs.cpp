@@ -195,13 +195,14 @@ void check_sources(CheckTable& t, const Repository& repo) {
 }
 
 /// Where figure `name` reads its data: the build's bench-data directory for a benchmark's
-/// figure, else `data_dir`.
+/// figure, its runs directory for a scene run by make (make fig7), else `data_dir`.
 fs::path figure_data_dir(const Repository& repo, const std::string& name, const fs::path& data_dir) {
-    return plots_benchmark(repo.root, name) ? repo.build / "bench-data" : data_dir;
+    if (plots_benchmark(repo.root, name)) return repo.build / "bench-data";
+    return plots_run(repo.root, name) ? repo.build / "runs" : data_dir;
 }
 
-/// Reference figures: recorded, small, and drawn from the data as it is now (a benchmark's
-/// figure only where its benchmark has run).
+/// Reference figures: recorded, small, and drawn from the data as it is now (a benchmark's or a
+/// make run's figure only where it has run).
 void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_dir, long& mutants_unchanged) {
     const fs::path dir = repo.root / "docs" / "figures";
     const auto recorded = read_fingerprints(dir / "fingerprints.txt");
@@ -215,8 +216,9 @@ void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_d
     }
     for (const auto& [name, fingerprint] : recorded) {
         const fs::path from = figure_data_dir(repo, name, data_dir);
-        if (plots_benchmark(repo.root, name) && !fs::exists(from / figure_reads(repo.root, name).front())) {
-            t.note("  " + name + ": its benchmark has not run in this build; the image is not compared with data");
+        if ((plots_benchmark(repo.root, name) || plots_run(repo.root, name)) &&
+            !fs::exists(from / figure_reads(repo.root, name).front())) {
+            t.note("  " + name + ": its benchmark or run has not run in this build; the image is not compared with data");
             t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
             continue;
         }

@@ -93,12 +93,25 @@ std::vector<std::string> figure_reads(const fs::path& root, const std::string& n
     return read_files(read_text(root / "figures" / (name + ".gp")), has_reads);
 }
 
-bool plots_benchmark(const fs::path& root, const std::string& name) {
-    static const std::regex needs(R"(^# needs:.*\bbench_)");
+namespace {
+
+bool needs_matching(const fs::path& root, const std::string& name, const std::regex& needs) {
     std::istringstream in(read_text(root / "figures" / (name + ".gp")));
     for (std::string line; std::getline(in, line);)
         if (std::regex_search(line, needs)) return true;
     return false;
+}
+
+}  // namespace
+
+bool plots_benchmark(const fs::path& root, const std::string& name) {
+    static const std::regex needs(R"(^# needs:.*\bbench_)");
+    return needs_matching(root, name, needs);
+}
+
+bool plots_run(const fs::path& root, const std::string& name) {
+    static const std::regex needs(R"(^# needs:.*\brun_)");
+    return needs_matching(root, name, needs);
 }
 
 std::string data_fingerprint(const std::string& text) {

@@ -30,6 +30,10 @@ std::vector<std::string> figure_reads(const std::filesystem::path& root, const s
 /// files are then in the build's bench-data directory, and exist only once the benchmark ran.
 bool plots_benchmark(const std::filesystem::path& root, const std::string& name);
 
+/// True if figures/NAME.gp plots a scene run by make (a line '# needs: run_SCENE'): its data lies
+/// under the build's runs directory.
+bool plots_run(const std::filesystem::path& root, const std::string& name);
+
 /// The fingerprint of a data file's text alone (the data part of figure_fingerprint).
 std::string data_fingerprint(const std::string& text);
 
