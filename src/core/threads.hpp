@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include <omp.h>
 
@@ -27,6 +28,62 @@ inline bool threads_pay(std::size_t cells) { return cells >= kParallelCells; }
 
 /// Threads a run uses: the OpenMP threads on a grid where threads pay (threads_pay), else one.
 inline int run_threads(std::size_t cells) { return threads_pay(cells) ? omp_get_max_threads() : 1; }
+
+/// True if a loop over a grid where threads pay (`parallel`, from threads_pay) is shared among
+/// threads now, i.e. more than one is available. Otherwise the loop runs plainly, outside any
+/// OpenMP region: a region costs a few microseconds even on one thread (libgomp ends each with a
+/// futex system call), more than many of the step's loops; on a small grid those regions took
+/// half of a one-thread run's time.
+inline bool on_threads(bool parallel) { return parallel && omp_get_max_threads() > 1; }
+
+/// Calls body(i) for i in [0, n): shared among the threads in a static schedule where
+/// on_threads(parallel), else in order on this thread.
+template <class Index, class Body>
+void for_each_index(bool parallel, Index n, Body&& body) {
+    if (on_threads(parallel)) {
+#pragma omp parallel for schedule(static)
+        for (Index i = 0; i < n; ++i) body(i);
+    } else {
+        for (Index i = 0; i < n; ++i) body(i);
+    }
+}
+
+/// Calls body(i, j) for i in [0, n), j in [0, m): the pairs shared in one static schedule where
+/// on_threads(parallel) (collapse(2)), else in order on this thread.
+template <class Index, class Body>
+void for_each_pair(bool parallel, Index n, Index m, Body&& body) {
+    if (on_threads(parallel)) {
+#pragma omp parallel for collapse(2) schedule(static)
+        for (Index i = 0; i < n; ++i)
+            for (Index j = 0; j < m; ++j) body(i, j);
+    } else {
+        for (Index i = 0; i < n; ++i)
+            for (Index j = 0; j < m; ++j) body(i, j);
+    }
+}
+
+/// A reduction over [0, n): each thread folds body(acc, i) over its share of the indices into its
+/// own copy of `init`, and the copies are combined in thread order by combine(a, b). The result
+/// does not depend on the thread count where combine is exact (max, min, integer sums, or).
+template <class T, class Index, class Body, class Combine>
+T fold_indices(bool parallel, Index n, const T& init, Body&& body, Combine&& combine) {
+    if (!on_threads(parallel)) {
+        T acc = init;
+        for (Index i = 0; i < n; ++i) body(acc, i);
+        return acc;
+    }
+    std::vector<T> part(static_cast<std::size_t>(omp_get_max_threads()), init);
+#pragma omp parallel
+    {
+        T acc = init;
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n; ++i) body(acc, i);
+        part[static_cast<std::size_t>(omp_get_thread_num())] = acc;
+    }
+    T acc = init;
+    for (const T& p : part) acc = combine(acc, p);
+    return acc;
+}
 
 /// Within its scope every parallel region (the project's loops and Eigen's products alike) gets
 /// one thread where `serial`; the caller's thread count comes back on exit.

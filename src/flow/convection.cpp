@@ -1,6 +1,7 @@
 #include "flow/convection.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "flow/face_balance.hpp"
 #include "flow/hllc.hpp"
 
@@ -50,9 +51,8 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
     };
 
     if (a == 0) {  // faces inside each row, from the first inside cell's lower face to the last one's upper face
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-        for (std::size_t r = 0; r < mesh.rows; ++r) {
-            if (mesh.row_lo[r] >= mesh.row_hi[r]) continue;  // no inside cell in this row
+        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
+            if (mesh.row_lo[r] >= mesh.row_hi[r]) return;  // no inside cell in this row
             const std::size_t base = nx * r, f0 = (nx + 1) * r, last = nx - 1;
             // The faces on the domain boundary (i = 0, nx) join the first and the last cell of the
             // row (periodic) or are walls (the inside cell's index stands for the missing one).
@@ -60,15 +60,13 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
             if (mesh.row_hi[r] == static_cast<int>(nx)) face(f0 + nx, base + last, base + (periodic ? 0 : last));
             const int i0 = std::max(mesh.row_lo[r], 1), i1 = std::min(mesh.row_hi[r], static_cast<int>(nx) - 1);
             for (int i = i0; i <= i1; ++i) face(f0 + i, base + i - 1, base + i);
-        }
+        });
         return;
     }
     // Axes y and z: the layer of faces between rows; a face row joins cell rows (j, k) and its
     // lower neighbour along the axis.
     const std::size_t layers = n_a + 1, others = a == 1 ? grid.n[2] : ny;
-#pragma omp parallel for collapse(2) schedule(static) if (mesh.parallel)
-    for (std::size_t l = 0; l < layers; ++l)
-        for (std::size_t o = 0; o < others; ++o) {
+    for_each_pair(mesh.parallel, layers, others, [&](std::size_t l, std::size_t o) {
             const std::size_t j_hi = a == 1 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
             const std::size_t k_hi = a == 2 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
             const std::size_t j_lo = a == 1 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
@@ -77,7 +75,7 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
             const int i0 = std::min(mesh.row_lo[r_hi], mesh.row_lo[r_lo]), i1 = std::max(mesh.row_hi[r_hi], mesh.row_hi[r_lo]);
             const std::size_t f0 = a == 1 ? nx * (l + (ny + 1) * o) : nx * (o + ny * l);
             for (int i = i0; i < i1; ++i) face(f0 + i, nx * r_lo + i, nx * r_hi + i);
-        }
+        });
 }
 
 void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,

@@ -1,6 +1,7 @@
 #include "flow/coupled_viscosity.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "flow/diffusion_faces.hpp"
 
 #include <algorithm>
@@ -98,16 +99,14 @@ Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     for (Eigen::Index b = 0; b < rhs_.cols(); ++b)
         if (!rhs_.col(b).isZero(0.0)) columns.push_back(b);
     // The columns' solves are independent: one per thread.
-    const long n = static_cast<long>(columns.size());
-#pragma omp parallel for schedule(static, 1) if (parallel && n > 1)
-    for (long q = 0; q < n; ++q) {
+    for_each_index(parallel && columns.size() > 1, columns.size(), [&](std::size_t q) {
         if (factorisation_ == Factorisation::simplicial) {
             x.col(columns[q]) = simplicial_.solve(rhs_.col(columns[q]));
-            continue;
+            return;
         }
         x.col(columns[q]) = rhs_.col(columns[q]);
         ldlt_.solve(x.col(columns[q]).data());
-    }
+    });
     return x;
 }
 

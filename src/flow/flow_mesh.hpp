@@ -15,6 +15,7 @@
 #pragma once
 
 #include "core/grid.hpp"
+#include "core/threads.hpp"
 
 #include <array>
 #include <cstddef>
@@ -67,25 +68,23 @@ struct FlowMesh {
     template <class Body>
     void for_row_cells(int axis, Body&& body) const {
         const std::size_t nx = grid.n[0];
-#pragma omp parallel for schedule(static) if (parallel)
-        for (std::size_t r = 0; r < rows; ++r) {
+        for_each_index(parallel, rows, [&](std::size_t r) {
             const AxisRow row = axis_row(axis, r);
 #pragma omp simd
             for (int i = row_lo[r]; i < row_hi[r]; ++i) body(nx * r + i, i, row);
-        }
+        });
     }
 
     /// Calls body(c, i, rows) for every inside cell, with the AxisRow of each axis in rows[3].
     template <class Body>
     void for_inside_cells(Body&& body) const {
         const std::size_t nx = grid.n[0];
-#pragma omp parallel for schedule(static) if (parallel)
-        for (std::size_t r = 0; r < rows; ++r) {
+        for_each_index(parallel, rows, [&](std::size_t r) {
             AxisRow ar[3];
             for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
             for (int i = row_lo[r]; i < row_hi[r]; ++i)
                 if (inside[nx * r + i]) body(nx * r + i, i, ar);
-        }
+        });
     }
 
     /// Calls body(face) for every interior and wall face of `axis` (a MeshFace), the list shared
@@ -93,17 +92,13 @@ struct FlowMesh {
     template <class Body>
     void for_each_face(int axis, Body&& body) const {
         const std::vector<MeshFace>& list = faces[axis];
-        const long n = static_cast<long>(list.size());
-#pragma omp parallel for schedule(static) if (parallel)
-        for (long q = 0; q < n; ++q) body(list[q]);
+        for_each_index(parallel, static_cast<long>(list.size()), [&](long q) { body(list[q]); });
     }
 
     /// Calls body(c) for every inside cell, the list shared among threads.
     template <class Body>
     void for_each_inside(Body&& body) const {
-        const std::size_t n = inside_cells.size();
-#pragma omp parallel for schedule(static) if (parallel)
-        for (std::size_t q = 0; q < n; ++q) body(inside_cells[q]);
+        for_each_index(parallel, inside_cells.size(), [&](std::size_t q) { body(inside_cells[q]); });
     }
 };
 

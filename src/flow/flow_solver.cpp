@@ -12,6 +12,7 @@
 #include "flow/viscosity.hpp"
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace granseg {
@@ -227,10 +228,9 @@ void FlowSolver::check_invariants() const {
         return Phi[c] >= 0.0 && Phi[c] < rcp[c] && std::isfinite(Phi[c]) && T[c] >= 0.0 && std::isfinite(T[c]) &&
                std::isfinite(u[0][c]) && std::isfinite(u[1][c]) && std::isfinite(u[2][c]);
     };
-    long bad = 0;
-    const std::size_t n = mesh_.inside_cells.size();
-#pragma omp parallel for reduction(+ : bad) schedule(static) if (mesh_.parallel)
-    for (std::size_t q = 0; q < n; ++q) bad += ok(mesh_.inside_cells[q]) ? 0 : 1;
+    const long bad = fold_indices(
+        mesh_.parallel, mesh_.inside_cells.size(), 0L, [&](long& count, std::size_t q) { count += ok(mesh_.inside_cells[q]) ? 0 : 1; },
+        std::plus<long>());
     if (bad == 0) return;
     for (std::size_t c : mesh_.inside_cells)
         if (!ok(c))

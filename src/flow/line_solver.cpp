@@ -1,6 +1,7 @@
 #include "flow/line_solver.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 #include <algorithm>
 
@@ -45,9 +46,7 @@ void LineSolver::factor(const Grid& grid, int axis, const std::vector<double>& l
     // choice gamma = -diag[0], which changes the first and the last pivot, and gets the
     // correction vector (gamma, 0, ..., 0, alpha) with alpha = -upper[n-1] (the coupling of cell
     // n-1 to cell 0); beta = -lower[0] couples cell 0 to cell n-1.
-#pragma omp parallel for collapse(2) schedule(static) if (parallel_)
-    for (std::size_t o = 0; o < L.n_outer; ++o)
-        for (std::size_t b = 0; b < blocks; ++b) {
+    for_each_pair(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
             const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
             for (int m = 0; m < L.n; ++m) {
                 const std::size_t row = o * L.outer + m * L.step;
@@ -71,7 +70,7 @@ void LineSolver::factor(const Grid& grid, int axis, const std::vector<double>& l
                     ratio_[c] = u * w;
                 }
             }
-            if (!cyclic_) continue;
+            if (!cyclic_) return;
             for (std::size_t q = q0; q < q1; ++q) {
                 const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
                 for (int m = 0; m < L.n; ++m) z_[base + m * L.step] = 0.0;
@@ -86,7 +85,7 @@ void LineSolver::factor(const Grid& grid, int axis, const std::vector<double>& l
                 denom_[line] = 1.0 + z_[base] + kappa * z_[base + last];
                 corner_lo_[line] = kappa;
             }
-        }
+        });
 }
 
 void LineSolver::sweep(double* x, std::size_t o, std::size_t q0, std::size_t q1) const {
@@ -116,18 +115,16 @@ void LineSolver::solve(std::vector<double>& x) const {
     const LineLayout L = layout(*grid_, axis_);
     const std::size_t last = static_cast<std::size_t>(L.n - 1) * L.step, blocks = (L.n_inner + kBlock - 1) / kBlock;
     double* data = x.data();
-#pragma omp parallel for collapse(2) schedule(static) if (parallel_)
-    for (std::size_t o = 0; o < L.n_outer; ++o)
-        for (std::size_t b = 0; b < blocks; ++b) {
+    for_each_pair(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
             const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
             sweep(data, o, q0, q1);
-            if (!cyclic_) continue;
+            if (!cyclic_) return;
             for (std::size_t q = q0; q < q1; ++q) {  // Sherman-Morrison correction
                 const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
                 const double fact = (data[base] + corner_lo_[line] * data[base + last]) / denom_[line];
                 for (int m = 0; m < L.n; ++m) data[base + m * L.step] -= fact * z_[base + m * L.step];
             }
-        }
+        });
 }
 
 }  // namespace granseg

@@ -1,5 +1,6 @@
 #include "flow/loads.hpp"
 
+#include "core/threads.hpp"
 #include "flow/hllc.hpp"
 
 #include <algorithm>
@@ -17,11 +18,10 @@ void cell_potential(const FlowMesh& mesh, const Frame& frame, double t, std::vec
     const std::size_t cells = grid.cells();
     const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
     double* psi = psi_out.data();
-#pragma omp parallel for simd schedule(static) if (mesh.parallel)
-    for (std::size_t c = 0; c < cells; ++c) {
+    for_each_index(mesh.parallel, cells, [&](std::size_t c) {
         const double rx = X[c] - x_c, rz = Z[c] - z_c;
         psi[c] = -(g_pot[0] * X[c] + g_pot[1] * Y[c] + g_pot[2] * Z[c]) - 0.5 * w2 * (rx * rx + rz * rz);
-    }
+    });
 }
 
 void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, const std::vector<double>& psi_cell,
@@ -45,8 +45,7 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
     const double* psi = psi_cell.data();
     const unsigned char* kind = mesh.face_kind[a].data();
     // Each cell writes its upper face; the cells of the first layer also write their lower face.
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-    for (std::size_t r = 0; r < mesh.rows; ++r) {
+    for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
         const AxisRow ar = mesh.axis_row(a, r);
         const bool first_layer = a == 0 || (a == 1 ? r % grid.n[1] == 0 : r < static_cast<std::size_t>(grid.n[1]));
         for (int i = 0; i < static_cast<int>(nx); ++i) {
@@ -56,7 +55,7 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
             if (first_layer && (a != 0 || i == 0))
                 psi_face[fl] = 0.5 * ((kind[fl] == kWallBelow && lo == 0 ? ghost(c, -1.0) : psi[c + lo]) + psi[c]);
         }
-    }
+    });
 }
 
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
@@ -112,22 +111,19 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
         downhill[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };
     if (a == 0) {
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-        for (std::size_t r = 0; r < mesh.rows; ++r) {
+        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
             const AxisRow ar = mesh.axis_row(0, r);
             for (int q = 0; q < static_cast<int>(nx); ++q) {
                 const int i = dir < 0 ? static_cast<int>(nx) - 1 - q : q;
                 visit(nx * r + i, ar.face0 + i, ar.face0 + i + 1, ar.lo_at(i), ar.hi_at(i));
             }
-        }
+        });
         return;
     }
     // y and z: layers in the sweep order, vectorised along x in blocks of columns.
     const int n_a = grid.n[a];
     const std::size_t others = a == 1 ? grid.n[2] : ny, blocks = (nx + 31) / 32;
-#pragma omp parallel for collapse(2) schedule(static) if (mesh.parallel)
-    for (std::size_t o = 0; o < others; ++o)
-        for (std::size_t blk = 0; blk < blocks; ++blk)
+    for_each_pair(mesh.parallel, others, blocks, [&](std::size_t o, std::size_t blk) {
             for (int q = 0; q < n_a; ++q) {
                 const int layer = dir < 0 ? n_a - 1 - q : q;
                 const std::size_t r = a == 1 ? layer + ny * o : o + ny * layer;
@@ -137,6 +133,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
                 for (std::size_t i = 32 * blk; i < i1; ++i)
                     visit(nx * r + i, ar.face0 + i, ar.face0 + i + ar.face_step, ar.lo, ar.hi);
             }
+        });
 }
 
 }  // namespace granseg

@@ -1,5 +1,7 @@
 #include "flow/multilevel.hpp"
 
+#include "core/threads.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -37,7 +39,7 @@ void for_rows(long m, bool parallel, Body&& body, bool team = false) {
         const long t = omp_get_thread_num(), threads = omp_get_num_threads();
         body(m * t / threads, m * (t + 1) / threads);
 #pragma omp barrier
-    } else if (parallel && m >= kParallelRows) {
+    } else if (on_threads(parallel) && m >= kParallelRows) {
 #pragma omp parallel
         {
             const long t = omp_get_thread_num(), threads = omp_get_num_threads();

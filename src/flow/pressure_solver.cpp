@@ -1,5 +1,6 @@
 #include "flow/pressure_solver.hpp"
 
+#include "core/threads.hpp"
 #include "flow/equation_of_state.hpp"
 #include "flow/team_cg.hpp"
 
@@ -59,9 +60,7 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
 
 void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state,
                                    const CellClosures& cl, const Eigen::VectorXd& step) {
-    const long cells = static_cast<long>(mesh.inside_cells.size());
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-    for (long q = 0; q < cells; ++q) {
+    for_each_index(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
         const std::size_t c = mesh.inside_cells[q];
         const long r = pattern_.unknown[c];
         const double T = state.T[c], Phi_co = cl.Phi_co[c], Phi_rcp = cl.Phi_rcp[c];
@@ -70,11 +69,11 @@ void PressureSolver::newton_update(const FlowMesh& mesh, const Material& materia
         const bool across_kink = volume_[r] > Phi_co && cl.p[c] + x_[r] + step[r] < p_co && Phi > 0.0;
         if (!across_kink) {
             x_[r] += step[r];
-            continue;
+            return;
         }
         const double g = compressibility_factor(material, Phi, Phi_rcp);
         x_[r] = kinetic_pressure(Phi, g, T) + yield_pressure(material.T0, Phi, Phi_co, g) - cl.p[c];
-    }
+    });
 }
 
 PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
@@ -107,12 +106,9 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
     // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
     // Newton step can reduce (the step rounds away in dp + step).
-    const long cells = static_cast<long>(mesh.inside_cells.size());
     auto evaluate = [&] {
         F_ = laplacian_ * x_ - target;
-        double resolution = 0.0;
-#pragma omp parallel for reduction(max : resolution) schedule(static) if (mesh.parallel)
-        for (long q = 0; q < cells; ++q) {
+        auto cell = [&](double& resolution, std::size_t q) {
             const std::size_t c = mesh.inside_cells[q];
             const long r = pattern_.unknown[c];
             const VolumeAtPressure v =
@@ -120,8 +116,8 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             F_[r] += v.Phi - base[r];
             volume_[r] = v.Phi, slope_[r] = v.slope;
             resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
-        }
-        return resolution;
+        };
+        return fold_indices(mesh.parallel, mesh.inside_cells.size(), 0.0, cell, [](double a, double b) { return std::max(a, b); });
     };
     double resolution = evaluate();
     // The warm start, unless it is further from the solution than no increment at all (F = -r

@@ -3,9 +3,11 @@
 #include "closures/closures.hpp"
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/threads.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace granseg {
@@ -22,15 +24,14 @@ void compute_primitives(const FlowMesh& mesh, const Material& mat, const FlowSet
     double *p = cl.p.data(), *cs = cl.c.data(), *eta = cl.eta.data(), *lambda = cl.lambda.data(),
            *epsPhi = cl.epsPhi.data(), *rcp = cl.Phi_rcp.data(), *co = cl.Phi_co.data();
     const bool per_cell = !phi_hat.empty();
-    long packed = 0;
-#pragma omp parallel for reduction(+ : packed) schedule(static) if (mesh.parallel)
-    for (std::size_t r = 0; r < mesh.rows; ++r) {
+    auto row = [&](long& packed_cells, std::size_t r) {
         const std::size_t base = nx * r;
         if (per_cell)
             for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
                 rcp[base + i] = mat.packing.Phi_rcp(phi_hat[base + i]);
                 co[base + i] = mat.packing.Phi_co(phi_hat[base + i]);
             }
+        long packed = 0;
 #pragma omp simd reduction(+ : packed)
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
             const std::size_t c = base + i;
@@ -49,8 +50,9 @@ void compute_primitives(const FlowMesh& mesh, const Material& mat, const FlowSet
             epsPhi[c] = empty ? 0.0 : v.eps * Phi[c];
             rcp[c] = Phi_rcp, co[c] = Phi_co;
         }
-    }
-    if (packed > 0)
+        packed_cells += packed;
+    };
+    if (fold_indices(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) > 0)
         for (std::size_t c : mesh.inside_cells)
             if (!(state.Phi[c] < cl.Phi_rcp[c]))
                 throw InvariantError("flow: Phi = " + format_number(state.Phi[c], 8) + " reached Phi_rcp = " +

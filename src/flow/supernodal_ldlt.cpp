@@ -1,6 +1,7 @@
 #include "flow/supernodal_ldlt.hpp"
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
@@ -262,17 +263,26 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
     std::array<char, 2> ok{1, 1};
     failed_row_ = -1;
     bool eigen_alone = true;
-#pragma omp parallel for schedule(static, 1) if (parallel) reduction(&& : eigen_alone)
-    for (int l = 0; l < 2; ++l) {
-        // Eigen's dense products open their own OpenMP team when the caller's is not active (a
-        // sequential run of the lanes) and nbThreads() > 1; a lane's thread keeps them to itself
-        // (this thread's setting only: the lanes' bits must not depend on the threads).
-        omp_set_num_threads(1);
-        eigen_alone = eigen_alone && Eigen::nbThreads() == 1;
+    auto run_lane = [&](int l) {
         Lane& lane = lanes_[l];
         lane.pending.clear();
         for (const auto& [begin, end] : lane.subtrees)
             for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
+    };
+    // Eigen's dense products open their own OpenMP team when the caller's is not active and
+    // nbThreads() > 1; a lane's thread keeps them to itself (the lanes' bits must not depend on
+    // the threads): one thread for each lane's thread, or for this thread while it runs both.
+    if (on_threads(parallel)) {
+#pragma omp parallel for schedule(static, 1) reduction(&& : eigen_alone)
+        for (int l = 0; l < 2; ++l) {
+            omp_set_num_threads(1);  // this lane's thread only
+            eigen_alone = eigen_alone && Eigen::nbThreads() == 1;
+            run_lane(l);
+        }
+    } else {
+        const SerialScope one_thread(true);
+        eigen_alone = Eigen::nbThreads() == 1;
+        for (int l = 0; l < 2; ++l) run_lane(l);
     }
     if (!eigen_alone)
         throw InvariantError("supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "

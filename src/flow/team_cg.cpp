@@ -1,5 +1,7 @@
 #include "flow/team_cg.hpp"
 
+#include "core/threads.hpp"
+
 #include <omp.h>
 
 #include <cmath>
@@ -54,8 +56,9 @@ TeamCgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eig
     const double* z = B.result().data();
     long iterations = 0;
     double residual2 = 0.0;
-#pragma omp parallel
-    {
+    // Every thread of the team runs this; its work-shared loops, single blocks and barriers bind
+    // to the team, or to this thread alone where it runs outside a parallel region.
+    auto team = [&] {
         double r2 = team_dot(rs, rs, n, partial);
         if (r2 >= threshold) {
             B.team_cycle(rs);  // ends with a barrier: z is complete
@@ -88,6 +91,12 @@ TeamCgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eig
         }
 #pragma omp single
         residual2 = r2;
+    };
+    if (on_threads(true)) {
+#pragma omp parallel
+        team();
+    } else {
+        team();
     }
     result.iterations = iterations;
     result.error = std::sqrt(residual2 / rhs2);

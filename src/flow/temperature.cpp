@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/threads.hpp"
 #include "flow/diffusion_faces.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
@@ -27,15 +28,14 @@ void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const Ce
     const double* eta = cl.eta.data();
     const unsigned char* in = mesh.inside.data();
     const auto& u = state.u;
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-    for (std::size_t row = 0; row < mesh.rows; ++row)
+    for_each_index(mesh.parallel, mesh.rows, [&](std::size_t row) {
         for (int i = mesh.row_lo[row]; i < mesh.row_hi[row]; ++i) heat[nx * row + i] = 0.0;
+    });
     for (int a = 0; a < 3; ++a) {
         if (!mesh.active[a]) continue;
         const double inv_h2 = 1.0 / (mesh.grid.h[a] * mesh.grid.h[a]);
         const unsigned char* kind = mesh.face_kind[a].data();
-#pragma omp parallel for schedule(static) if (mesh.parallel)
-        for (std::size_t row = 0; row < mesh.rows; ++row) {
+        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t row) {
             const AxisRow ar = mesh.axis_row(a, row);
             for (int i = mesh.row_lo[row]; i < mesh.row_hi[row]; ++i) {
                 const std::size_t c = nx * row + i, fl = ar.face0 + i, fu = fl + ar.face_step;
@@ -56,7 +56,7 @@ void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const Ce
                 }
                 heat[c] += h;
             }
-        }
+        });
     }
 }
 

@@ -2,11 +2,13 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/threads.hpp"
 #include "flow/face_balance.hpp"
 #include "flow/semi_implicit.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace granseg {
@@ -22,21 +24,21 @@ StepRates largest_rates(const FlowMesh& mesh, const FlowState& state, const Cell
     const double *Phi = state.Phi.data(), *rcp = closures.Phi_rcp.data();
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const AxisWeights inv_h = axis_weights(mesh);
-    double rate = 0.0, outflow_rate = 0.0, compaction_rate = 0.0;
-#pragma omp parallel for reduction(max : rate, outflow_rate, compaction_rate) schedule(static) if (mesh.parallel)
-    for (std::size_t r = 0; r < mesh.rows; ++r) {
+    auto row = [&](StepRates& rates, std::size_t r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
             const std::size_t c = nx * r + i;
             if (!mesh.inside[c]) continue;
-            rate = std::max(rate, wave(c, i, ar));
+            rates.waves = std::max(rates.waves, wave(c, i, ar));
             const double out = face_outflow(M, inv_h, i, ar), div = face_balance(M, inv_h, i, ar);
-            if (out > 0.0) outflow_rate = std::max(outflow_rate, outflow(c, out));
-            if (div < 0.0) compaction_rate = std::max(compaction_rate, -div / (rcp[c] - Phi[c]));
+            if (out > 0.0) rates.outflow = std::max(rates.outflow, outflow(c, out));
+            if (div < 0.0) rates.compaction = std::max(rates.compaction, -div / (rcp[c] - Phi[c]));
         }
-    }
-    return {rate, outflow_rate, compaction_rate};
+    };
+    return fold_indices(mesh.parallel, mesh.rows, StepRates{0.0, 0.0, 0.0}, row, [](const StepRates& x, const StepRates& y) {
+        return StepRates{std::max(x.waves, y.waves), std::max(x.outflow, y.outflow), std::max(x.compaction, y.compaction)};
+    });
 }
 }  // namespace
 
@@ -106,9 +108,7 @@ bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<doubl
                         const CellClosures& cl, const FlowFaces& faces) {
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const AxisWeights inv_h = axis_weights(mesh);
-    long bad = 0;
-#pragma omp parallel for reduction(+ : bad) schedule(static) if (mesh.parallel)
-    for (std::size_t r = 0; r < mesh.rows; ++r) {
+    auto row = [&](long& bad, std::size_t r) {
         AxisRow ar[3];
         for (int a = 0; a < 3; ++a) ar[a] = mesh.axis_row(a, r);
         for (int i = mesh.row_lo[r]; i < mesh.row_hi[r]; ++i) {
@@ -119,8 +119,8 @@ bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<doubl
                             -dt * div <= kCompactionFraction * (cl.Phi_rcp[c] - Phi_before[c]);
             bad += ok ? 0 : 1;
         }
-    }
-    return bad == 0;
+    };
+    return fold_indices(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) == 0;
 }
 
 }  // namespace granseg

@@ -34,18 +34,17 @@ void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, co
     double* G_out = G.data();
     const unsigned char* in = inside_.data();
     // Faces between two cells of the grid, row by row along x: the face below cell U is f.
-    int through_wall = 0;
-#pragma omp parallel for reduction(| : through_wall) schedule(static) if (parallel_)
-    for (std::size_t r = 0; r < rows; ++r) {
+    auto row = [&](int& through_wall, std::size_t r) {
         const std::size_t j = r % ny, k = r / ny, layer = axis == 1 ? j : k;
         const std::size_t f0 = g.face_index(axis, 0, static_cast<int>(j), static_cast<int>(k)), c0 = nx * r;
-        if (axis != 0 && layer == 0) continue;  // the row's faces along y or z lie on the domain boundary
+        if (axis != 0 && layer == 0) return;  // the row's faces along y or z lie on the domain boundary
         for (std::size_t i = axis == 0 ? 1 : 0; i < nx; ++i) {
             const std::size_t f = f0 + i, U = c0 + i, L = U - s;
             G_out[f] = m[f] * (m[f] > 0.0 ? hat[L] : hat[U]);  // hat = 0 in outside cells
             through_wall |= (m[f] != 0.0) & !(in[L] & in[U]);
         }
-    }
+    };
+    const int through_wall = fold_indices(parallel_, rows, 0, row, [](int a, int b) { return a | b; });
     const auto wall_flux = [&](std::size_t face) {
         return InvariantError("bulk transport: mass flux " + std::to_string(M[face]) + " through a wall face (axis " +
                               std::to_string(axis) + ", face " + std::to_string(face) + ")");
@@ -87,8 +86,7 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
     const unsigned char* in = inside_.data();
     const double* Phi = Phi_old.data();
     double *hat = hat_.data(), *u = phi.data();
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0;
+    for_each_index(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0; });
     // The axes that carry mass (more than one cell and a flux field), in the order x, y, z.
     int axes[3], along = 0;
     double inv_h[3];
@@ -102,9 +100,8 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
         ++along;
     }
     // (eqs. 64, 65: F^bulk) in the mass balance's order: the net outflow first, then one subtraction.
-    double largest_rate = 0.0;  // max of sum_out |M|/(h Phi_old) over cells with Phi_old >= Phi_min
-#pragma omp parallel for reduction(max : largest_rate) schedule(static) if (parallel_)
-    for (std::size_t r = 0; r < rows; ++r) {
+    // largest_rate: max of sum_out |M|/(h Phi_old) over cells with Phi_old >= Phi_min
+    auto row = [&](double& largest_rate, std::size_t r) {
         const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
         std::size_t lower[3], step[3];
         for (int q = 0; q < along; ++q) lower[q] = g.face_index(axes[q], 0, j, k), step[q] = g.face_stride(axes[q]);
@@ -120,8 +117,8 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
             u[c] = u[c] - dt * net;
             if (Phi[c] >= Phi_min && Phi[c] > 0.0 && out > largest_rate * Phi[c]) largest_rate = out / Phi[c];
         }
-    }
-    return dt * largest_rate;
+    };
+    return dt * fold_indices(parallel_, rows, 0.0, row, [](double a, double b) { return std::max(a, b); });
 }
 
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,

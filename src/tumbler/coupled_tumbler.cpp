@@ -104,8 +104,7 @@ std::vector<double> CoupledTumbler::phi_hat() const {
     const unsigned char* in = inside_.data();
     const double *Phi = flow_.Phi().data(), *phi = phi_.data();
     std::vector<double> hat(cells);
-#pragma omp parallel for schedule(static) if (parallel_)
-    for (std::size_t c = 0; c < cells; ++c) hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0;
+    for_each_index(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0; });
     return hat;
 }
 
@@ -145,16 +144,20 @@ void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char*
     // The donor-cell step keeps phi_hat in [0, 1] exactly, and so does the limited antidiffusion;
     // their rounding is a few ulps of the amounts that pass through a cell: relative to the cell's
     // larger Phi (before or after the step).
-    double excess = -INFINITY, lowest = INFINITY, worst = 0.0;  // worst: largest correction / allowance
-    long nonfinite = 0;
-#pragma omp parallel for reduction(max : excess, worst) reduction(min : lowest) reduction(+ : nonfinite) schedule(static) if (parallel_)
-    for (std::size_t c = 0; c < cells; ++c) {
-        if (!in[c]) continue;
-        nonfinite += !std::isfinite(phi[c]);
-        excess = std::max(excess, phi[c] - Phi[c]), lowest = std::min(lowest, phi[c]);
+    struct Bounds {
+        double excess = -INFINITY, lowest = INFINITY, worst = 0.0;  // worst: largest correction / allowance
+        long nonfinite = 0;
+    };
+    auto cell = [&](Bounds& b, std::size_t c) {
+        if (!in[c]) return;
+        b.nonfinite += !std::isfinite(phi[c]);
+        b.excess = std::max(b.excess, phi[c] - Phi[c]), b.lowest = std::min(b.lowest, phi[c]);
         const double correction = std::max(phi[c] - Phi[c], -phi[c]);
-        if (correction > 0.0) worst = std::max(worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
-    }
+        if (correction > 0.0) b.worst = std::max(b.worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
+    };
+    const auto [excess, lowest, worst, nonfinite] = fold_indices(parallel_, cells, Bounds{}, cell, [](const Bounds& x, const Bounds& y) {
+        return Bounds{std::max(x.excess, y.excess), std::min(x.lowest, y.lowest), std::max(x.worst, y.worst), x.nonfinite + y.nonfinite};
+    });
     max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);
     if (nonfinite > 0)
         throw InvariantError(std::string("tumbler: non-finite ") + name + " after the bulk step at t = " + format_number(time()) + " (" +

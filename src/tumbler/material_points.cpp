@@ -1,5 +1,7 @@
 #include "tumbler/material_points.hpp"
 
+#include "core/threads.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -36,11 +38,10 @@ double MaterialPoints::interpolate(const std::vector<double>& f, double x, doubl
 }
 
 void MaterialPoints::advance(const std::vector<double>& ux, const std::vector<double>& uz, double dt) {
-#pragma omp parallel for schedule(static) if (x_.size() >= 4096)
-    for (std::size_t p = 0; p < x_.size(); ++p) {
+    for_each_index(x_.size() >= 4096, x_.size(), [&](std::size_t p) {
         const double xm = x_[p] + 0.5 * dt * interpolate(ux, x_[p], z_[p]), zm = z_[p] + 0.5 * dt * interpolate(uz, x_[p], z_[p]);
         x_[p] += dt * interpolate(ux, xm, zm), z_[p] += dt * interpolate(uz, xm, zm);
-    }
+    });
 }
 
 double MaterialPoints::marked_share_within(double r) const {
