@@ -40,6 +40,7 @@ LIB_SRC     := $(shell find src -name '*.cpp' -not -path 'src/cli/*' | sort)
 DATA_FILES  := $(shell find src -name '*.dat' | sort)
 CLI_SRC     := $(sort $(wildcard src/cli/*.cpp))
 HARNESS_SRC := $(sort $(wildcard verification/harness/*.cpp))
+STUDY_SRC   := $(sort $(wildcard verification/study/*.cpp))
 VERIFY_SRC  := $(sort $(wildcard verification/verify_*.cpp))
 BENCH_SRC   := $(sort $(wildcard verification/bench/bench_*.cpp))
 TEST_SRC    := $(sort $(wildcard tests/*.cpp))
@@ -48,6 +49,7 @@ obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
 LIB_OBJ     := $(call obj,$(LIB_SRC)) $(BUILD)/obj/gen/embedded_data.o
 CLI_OBJ     := $(call obj,$(CLI_SRC))
 HARNESS_OBJ := $(call obj,$(HARNESS_SRC))
+STUDY_OBJ   := $(call obj,$(STUDY_SRC))
 TEST_OBJ    := $(call obj,$(TEST_SRC))
 
 LIB        := $(BUILD)/libgranseg.a
@@ -151,7 +153,7 @@ $(BUILD)/verification/%: $(BUILD)/obj/verification/%.o $(HARNESS_OBJ) $(LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-$(BUILD)/bench/%: $(BUILD)/obj/verification/bench/%.o $(HARNESS_OBJ) $(LIB)
+$(BUILD)/bench/%: $(BUILD)/obj/verification/bench/%.o $(STUDY_OBJ) $(HARNESS_OBJ) $(LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(LDFLAGS) $^ $(LDLIBS) -o $@
 

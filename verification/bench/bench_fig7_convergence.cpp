@@ -1,7 +1,7 @@
 // Solution verification of the paper's drum (Fig. 7, verification/scenes/tumbler.toml):
 // how much of each Fig. 7 quantity is the model and how much the grid and the time step.
 //
-//   1. runs (harness/fig7_study.hpp): the coupled drum with each --transports at each --cells
+//   1. runs (study/fig7_study.hpp): the coupled drum with each --transports at each --cells
 //      (50, 70, 100, 140: ratios near sqrt 2, even counts), dt_max proportional to h so that it
 //      sets the steps on every grid; the explicit time stepping at each --explicit-cells; the dt
 //      study at the coarsest and the finest grid (dt_max times factors below 1); a passive tracer
@@ -25,10 +25,10 @@
 //   --cells 26,36,50,70 --transports muscl --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
 #include "flow/flow_settings.hpp"
-#include "harness/fig7_core.hpp"
-#include "harness/fig7_report.hpp"
-#include "harness/fig7_study.hpp"
-#include "harness/fig7_work.hpp"
+#include "study/fig7_core.hpp"
+#include "study/fig7_report.hpp"
+#include "study/fig7_study.hpp"
+#include "study/fig7_work.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
 #include "scenes/tumbler.hpp"

@@ -1,4 +1,4 @@
-#include "harness/fig7_study.hpp"
+#include "study/fig7_study.hpp"
 
 #include "core/error.hpp"
 #include "core/output.hpp"

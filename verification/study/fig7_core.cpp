@@ -1,4 +1,4 @@
-#include "harness/fig7_core.hpp"
+#include "study/fig7_core.hpp"
 
 #include "core/output.hpp"
 #include "flow/flow_settings.hpp"

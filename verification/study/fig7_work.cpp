@@ -1,4 +1,4 @@
-#include "harness/fig7_work.hpp"
+#include "study/fig7_work.hpp"
 
 #include "core/output.hpp"
 

@@ -12,7 +12,7 @@
 //   tracer       the passive tracer's core share (the core quantity only) against h
 #pragma once
 
-#include "harness/fig7_study.hpp"
+#include "study/fig7_study.hpp"
 #include "harness/grid_convergence.hpp"
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "harness/fig7_report.hpp"
+#include "study/fig7_report.hpp"
 
 #include "core/output.hpp"
 

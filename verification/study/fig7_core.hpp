@@ -19,7 +19,7 @@
 // each printed "not established" where it is not, and the largest established part named.
 #pragma once
 
-#include "harness/fig7_report.hpp"
+#include "study/fig7_report.hpp"
 
 namespace granseg::verify {
 

@@ -3,7 +3,7 @@
 // reference), per time stepping, resolution and dt_max, and which run reaches a tolerance soonest.
 #pragma once
 
-#include "harness/fig7_report.hpp"
+#include "study/fig7_report.hpp"
 
 #include <string>
 #include <vector>
