@@ -10,7 +10,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <array>
+#include <tuple>
 #include <vector>
 
 using namespace granseg;
@@ -84,6 +86,37 @@ BOOST_AUTO_TEST_CASE(below_the_crossover_a_run_opens_one_thread) {
     BOOST_TEST(run_threads(kParallelCells - 1) == 1);
     BOOST_TEST(run_threads(kParallelCells) == 2);
     omp_set_num_threads(before);
+}
+
+BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_is_there) {
+    const int before = omp_get_max_threads();
+    // The thread and the OpenMP nesting level each index ran at (level 0: outside any region,
+    // not even a one-thread team), and a reduction (largest value, count) over the indices.
+    auto run = [](bool parallel) {
+        std::vector<int> thread(1000, -1), level(1000, -1);
+        for_each_index(parallel, thread.size(), [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
+        struct Fold {
+            double largest = 0.0;
+            long count = 0;
+        };
+        const Fold f = fold_indices(parallel, 1000L, Fold{}, [](Fold& acc, long i) {
+            acc.largest = std::max(acc.largest, static_cast<double>((i * 7919) % 1000));
+            acc.count += i % 3 == 0;
+        }, [](const Fold& x, const Fold& y) { return Fold{std::max(x.largest, y.largest), x.count + y.count}; });
+        return std::make_tuple(*std::max_element(thread.begin(), thread.end()), *std::max_element(level.begin(), level.end()), f.largest,
+                               f.count);
+    };
+    omp_set_num_threads(2);
+    const auto [threads_on, level_on, largest_on, count_on] = run(true);
+    const auto [threads_off, level_off, largest_off, count_off] = run(false);
+    omp_set_num_threads(1);
+    const auto [threads_one, level_one, largest_one, count_one] = run(true);
+    omp_set_num_threads(before);
+    BOOST_TEST((threads_on == 1 && level_on == 1));    // the second thread took its share
+    BOOST_TEST((threads_off == 0 && level_off == 0));  // a grid below the crossover: no region
+    BOOST_TEST((threads_one == 0 && level_one == 0));  // one thread: no region either
+    BOOST_TEST((largest_on == largest_off && largest_off == largest_one && largest_one == 999.0));
+    BOOST_TEST((count_on == count_off && count_off == count_one && count_one == 334));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
