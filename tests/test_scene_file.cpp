@@ -2,13 +2,13 @@
 // "FILE: [section] key: what (allowed: ...)" and nothing is written.
 #include "core/error.hpp"
 #include "core/scene_file.hpp"
+#include "harness/text_pattern.hpp"
 #include "scenes/scene_kind.hpp"
 
 #include <boost/test/unit_test.hpp>
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 
 using namespace granseg;
 
@@ -35,8 +35,8 @@ std::string number_error(const std::string& toml) {
 }
 
 bool is_one_line_in_format(const std::string& message) {
-    static const std::regex format(R"(^t\.toml: \[[a-z_]*\] [A-Za-z_]+: .+ \(allowed: .+\)$)");
-    return std::regex_match(message, format);
+    static const verify::Pattern format(R"(^t\.toml: \[[a-z_]*\] [A-Za-z_]+: .+ \(allowed: .+\)$)");
+    return format.matches(message);
 }
 
 }  // namespace

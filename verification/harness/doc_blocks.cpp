@@ -1,12 +1,13 @@
 #include "harness/doc_blocks.hpp"
 
+#include "harness/text_pattern.hpp"
+
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -36,8 +37,8 @@ std::string collapse_blanks(const std::string& s) {
     return out;
 }
 
-const std::regex& number_pattern() {
-    static const std::regex r(R"([-+]?(\d+\.?(\d*)|\.(\d+))([eE]([-+]?\d+))?)");
+const Pattern& number_pattern() {
+    static const Pattern r(R"([-+]?(\d+\.?(\d*)|\.(\d+))([eE]([-+]?\d+))?)");
     return r;
 }
 
@@ -94,14 +95,13 @@ int expected_status(const Block& b) {
 Tokens tokens_of(const std::string& line) {
     Tokens t;
     std::string rest = collapse_blanks(line);
-    std::smatch m;
-    while (std::regex_search(rest, m, number_pattern())) {
-        t.words.push_back(m.prefix());
-        t.numbers.push_back(std::stod(m.str(0)));
-        const int decimals = static_cast<int>(m.length(2) + m.length(3));
-        const int exponent = m[5].matched ? std::stoi(m.str(5)) : 0;
+    while (const auto m = number_pattern().first_in(rest)) {
+        t.words.push_back(m->prefix);
+        t.numbers.push_back(std::stod((*m)[0]));
+        const int decimals = static_cast<int>((*m)[2].size() + (*m)[3].size());
+        const int exponent = m->took_part[5] ? std::stoi((*m)[5]) : 0;
         t.units.push_back(std::pow(10.0, exponent - decimals));
-        rest = m.suffix();
+        rest = m->suffix;
     }
     t.words.push_back(rest);
     return t;

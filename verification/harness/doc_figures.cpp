@@ -2,12 +2,12 @@
 
 #include "core/output.hpp"
 #include "harness/doc_blocks.hpp"
+#include "harness/text_pattern.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -62,13 +62,11 @@ std::vector<std::vector<std::string>> data_rows(const std::string& text) {
 
 /// The files a script loads (`load 'figures/x.gnuplot'`), relative to the repository's top.
 std::vector<std::string> loaded_scripts(const std::string& script) {
-    static const std::regex load(R"(^\s*load\s+['"]([^'"]+)['"])");
+    static const Pattern load(R"(^\s*load\s+['"]([^'"]+)['"])");
     std::vector<std::string> files;
     std::istringstream in(script);
-    for (std::string line; std::getline(in, line);) {
-        std::smatch m;
-        if (std::regex_search(line, m, load)) files.push_back(m.str(1));
-    }
+    for (std::string line; std::getline(in, line);)
+        if (const auto m = load.first_in(line)) files.push_back((*m)[1]);
     return files;
 }
 
@@ -95,22 +93,22 @@ std::vector<std::string> figure_reads(const fs::path& root, const std::string& n
 
 namespace {
 
-bool needs_matching(const fs::path& root, const std::string& name, const std::regex& needs) {
+bool needs_matching(const fs::path& root, const std::string& name, const Pattern& needs) {
     std::istringstream in(read_text(root / "figures" / (name + ".gp")));
     for (std::string line; std::getline(in, line);)
-        if (std::regex_search(line, needs)) return true;
+        if (needs.found_in(line)) return true;
     return false;
 }
 
 }  // namespace
 
 bool plots_benchmark(const fs::path& root, const std::string& name) {
-    static const std::regex needs(R"(^# needs:.*\bbench_)");
+    static const Pattern needs(R"(^# needs:.*\bbench_)");
     return needs_matching(root, name, needs);
 }
 
 bool plots_run(const fs::path& root, const std::string& name) {
-    static const std::regex needs(R"(^# needs:.*\brun_)");
+    static const Pattern needs(R"(^# needs:.*\brun_)");
     return needs_matching(root, name, needs);
 }
 

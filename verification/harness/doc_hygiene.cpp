@@ -1,10 +1,10 @@
 #include "harness/doc_hygiene.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/text_pattern.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -14,53 +14,59 @@ namespace granseg::verify::docs {
 
 namespace {
 
-struct Pattern {
+struct NamedPattern {
     std::string what;
-    std::regex re;
+    Pattern re;
 };
 
 const std::string kMonths =
     "(January|February|March|April|May|June|July|August|September|October|November|December|"
     "Jan|Feb|Mar|Apr|Jun|Jul|Aug|Sep|Sept|Oct|Nov|Dec)\\.?";
 
-const std::vector<Pattern>& history_patterns() {
-    static const std::vector<Pattern> p = {
-        {"date", std::regex("\\b\\d{1,2} " + kMonths + ",? \\d{4}\\b")},
-        {"date", std::regex("\\b" + kMonths + " \\d{1,2},? \\d{4}\\b")},
-        {"date", std::regex("\\b" + kMonths + " \\d{4}\\b")},
-        {"date", std::regex(R"(\b\d{4}-\d{2}-\d{2}\b)")},
-        {"date", std::regex(R"(\b(today|yesterday)\b)", std::regex::icase)},
+std::vector<NamedPattern> history_list() {
+    std::vector<NamedPattern> p;
+    p.push_back({"date", Pattern("\\b\\d{1,2} " + kMonths + ",? \\d{4}\\b")});
+    p.push_back({"date", Pattern("\\b" + kMonths + " \\d{1,2},? \\d{4}\\b")});
+    p.push_back({"date", Pattern("\\b" + kMonths + " \\d{4}\\b")});
+    p.push_back({"date", Pattern(R"(\b\d{4}-\d{2}-\d{2}\b)")});
+    p.push_back({"date", Pattern(R"(\b(today|yesterday)\b)", true)});
         // A hexadecimal word with a digit and a letter other than e (1.046400526e-05 is a number).
-        {"commit hash", std::regex(R"(\b(?=[0-9a-f]*[a-df])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b)")},
-        {"machine", std::regex(R"(\b(Xeon|EPYC|Epyc|Intel|AMD|Ryzen|Graviton|vCPUs?|microVM)\b)")},
-        {"machine", std::regex(R"(\b(this|the project|an idle|the idle|a shared|the shared|today's) machine\b)",
-                               std::regex::icase)},
-        {"machine", std::regex(R"(\b(load average|freshly booted)\b)", std::regex::icase)},
-    };
+    p.push_back({"commit hash", Pattern(R"(\b(?=[0-9a-f]*[a-df])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b)")});
+    p.push_back({"machine", Pattern(R"(\b(Xeon|EPYC|Epyc|Intel|AMD|Ryzen|Graviton|vCPUs?|microVM)\b)")});
+    p.push_back({"machine", Pattern(R"(\b(this|the project|an idle|the idle|a shared|the shared|today's) machine\b)", true)});
+    p.push_back({"machine", Pattern(R"(\b(load average|freshly booted)\b)", true)});
+    return p;
+}
+
+const std::vector<NamedPattern>& history_patterns() {
+    static const std::vector<NamedPattern> p = history_list();
     return p;
 }
 
 // The names are split by a character class so that this file does not match itself.
-const std::vector<Pattern>& outside_patterns() {
-    static const std::vector<Pattern> p = {
-        {"outside the repository", std::regex(R"(\.\.[/]shared|/work[/]|\bshared[/](paper|research)\b)")},
-        {"outside the repository",
-         std::regex(R"(\b(NOTES|model|semi_implicit|aesthetics|performance|anchors|solution_verification)[.]md\b)")},
-        {"outside the repository", std::regex(R"(\bresearch[/]|\bresearch notes\b|\bpaper notes of the team\b)")},
-    };
+std::vector<NamedPattern> outside_list() {
+    std::vector<NamedPattern> p;
+    p.push_back({"outside the repository", Pattern(R"(\.\.[/]shared|/work[/]|\bshared[/](paper|research)\b)")});
+    p.push_back({"outside the repository",
+                 Pattern(R"(\b(NOTES|model|semi_implicit|aesthetics|performance|anchors|solution_verification)[.]md\b)")});
+    p.push_back({"outside the repository", Pattern(R"(\bresearch[/]|\bresearch notes\b|\bpaper notes of the team\b)")});
     return p;
 }
 
-std::vector<Finding> scan(const std::string& text, const std::vector<Pattern>& patterns) {
+const std::vector<NamedPattern>& outside_patterns() {
+    static const std::vector<NamedPattern> p = outside_list();
+    return p;
+}
+
+std::vector<Finding> scan(const std::string& text, const std::vector<NamedPattern>& patterns) {
     std::vector<Finding> found;
     std::istringstream in(text);
     int number = 0;
     for (std::string line; std::getline(in, line);) {
         ++number;
-        for (const Pattern& p : patterns) {
-            std::smatch m;
-            if (std::regex_search(line, m, p.re)) {
-                found.push_back({number, p.what, m.str(0)});
+        for (const NamedPattern& p : patterns) {
+            if (const auto m = p.re.first_in(line)) {
+                found.push_back({number, p.what, (*m)[0]});
                 break;
             }
         }
@@ -104,7 +110,7 @@ std::vector<Finding> history_findings(const std::string& text) { return scan(tex
 std::vector<Finding> outside_references(const std::string& text) { return scan(text, outside_patterns()); }
 
 std::vector<Finding> broken_links(const std::string& text, const fs::path& page_dir, const fs::path& root) {
-    static const std::regex link(R"(\]\(([^)\s]*)\))");
+    static const Pattern link(R"(\]\(([^)\s]*)\))");
     std::vector<Finding> found;
     std::istringstream in(text);
     int number = 0;
@@ -113,8 +119,8 @@ std::vector<Finding> broken_links(const std::string& text, const fs::path& page_
         ++number;
         if (line.rfind("```", 0) == 0) fenced = !fenced;
         if (fenced) continue;
-        for (std::sregex_iterator it(line.begin(), line.end(), link), end; it != end; ++it) {
-            const std::string target = (*it)[1];
+        for (const PatternMatch& m : link.all_in(line)) {
+            const std::string target = m[1];
             if (target.rfind("http://", 0) == 0 || target.rfind("https://", 0) == 0 || target.rfind("mailto:", 0) == 0) continue;
             const auto hash = target.find('#');
             const std::string file = target.substr(0, hash), anchor = hash == std::string::npos ? "" : target.substr(hash + 1);

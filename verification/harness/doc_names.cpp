@@ -1,9 +1,10 @@
 #include "harness/doc_names.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/text_pattern.hpp"
 
 #include <cctype>
-#include <regex>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -31,20 +32,19 @@ void add_words(const std::string& text, std::set<std::string>& words) {
 /// The Makefile's targets: the names before a ':' (not ':=') at the start of a line, and the
 /// words of its .PHONY lines.
 std::set<std::string> make_targets(const std::string& makefile) {
-    static const std::regex rule(R"(^([A-Za-z0-9_.-]+)\s*:(?!=))");
+    static const Pattern rule(R"(^([A-Za-z0-9_.-]+)\s*:(?!=))");
     std::set<std::string> targets;
     std::istringstream in(makefile);
     bool phony = false;
     for (std::string line; std::getline(in, line);) {
-        std::smatch m;
         if (line.rfind(".PHONY:", 0) == 0) phony = true, line = line.substr(7);
         if (phony) {
             std::istringstream words(line);
             for (std::string w; words >> w;)
                 if (w != "\\") targets.insert(w);
             phony = !line.empty() && line.back() == '\\';
-        } else if (std::regex_search(line, m, rule)) {
-            targets.insert(m[1]);
+        } else if (const auto m = rule.first_in(line)) {
+            targets.insert((*m)[1]);
         }
     }
     return targets;
@@ -61,15 +61,15 @@ std::vector<std::string> expand(const std::string& s) {
     return out;
 }
 
-const std::regex kExtension(R"(\.(cpp|hpp|h|toml|md|gp|dat|png|gif|txt|sh|vtk|csv|log|rc|seconds|xml)$)");
-const std::regex kPlaceholder(R"(\b[A-Z]{3,}\b|\*)");
+const Pattern kExtension(R"(\.(cpp|hpp|h|toml|md|gp|dat|png|gif|txt|sh|vtk|csv|log|rc|seconds|xml)$)");
+const Pattern kPlaceholder(R"(\b[A-Z]{3,}\b|\*)");
 
 bool known_path(std::string p, const std::string& page, const TreeNames& tree) {
-    if (std::regex_search(p, kPlaceholder)) return true;
+    if (kPlaceholder.found_in(p)) return true;
     while (!p.empty() && p.back() == '/') p.pop_back();
     if (fs::exists(tree.root / p) || fs::exists(tree.root / fs::path(page).parent_path() / p)) return true;
     const std::string name = fs::path(p).filename().string();
-    const std::string stem = std::regex_replace(name, kExtension, "");
+    const std::string stem = kExtension.removed_from(name);
     return tree.files.count(name) || (!stem.empty() && tree.text.find(stem) != std::string::npos);
 }
 
@@ -84,28 +84,28 @@ bool known_word(const std::string& w, const TreeNames& tree) {
 
 /// The names of one backticked span that the tree does not hold.
 std::vector<std::string> unknown_in(const std::string& span, const std::string& page, const TreeNames& tree) {
-    static const std::regex make(R"(^make\s+(.*)$)"), section(R"(^\[([A-Za-z_]\w*)\](?:\s+([A-Za-z_]\w*))?)"),
+    static const Pattern make(R"(^make\s+(.*)$)"), section(R"(^\[([A-Za-z_]\w*)\](?:\s+([A-Za-z_]\w*))?)"),
         option(R"(^--([a-z][a-z0-9-]*))"), pathlike(R"(^[A-Za-z0-9_./{},*-]+$)"),
         identifier(R"(^([A-Za-z_]\w*(?:::~?[A-Za-z_]\w*)*)(\(\))?$)"), quoted(R"re(^"([A-Za-z0-9_-]+)"$)re"),
         hyphenated(R"(^([a-z][a-z0-9]*(?:-[a-z0-9]+)+)$)"), assignment(R"(^([A-Za-z]\w*_\w*)\s*=\s*\S)");
     std::vector<std::string> unknown;
-    std::smatch m;
-    if (std::regex_match(span, m, make)) {
-        std::istringstream words(m[1].str());
+    std::optional<PatternMatch> m;
+    if ((m = make.match_of(span))) {
+        std::istringstream words((*m)[1]);
         for (std::string w; words >> w;)
             if (w != "&&" && w != "make" && w.find('=') == std::string::npos && w[0] != '-' && !tree.targets.count(w))
                 unknown.push_back(w);
-    } else if (std::regex_search(span, m, section)) {
+    } else if ((m = section.first_in(span))) {
         for (int g : {1, 2})
-            if (m[g].matched && !tree.words.count(m[g])) unknown.push_back(m[g]);
-    } else if (std::regex_search(span, m, option)) {
-        if (tree.text.find(m[1].str()) == std::string::npos) unknown.push_back("--" + m[1].str());
-    } else if (std::regex_match(span, pathlike) && (span.find('/') != std::string::npos || std::regex_search(span, kExtension))) {
+            if (m->took_part[g] && !tree.words.count((*m)[g])) unknown.push_back((*m)[g]);
+    } else if ((m = option.first_in(span))) {
+        if (tree.text.find((*m)[1]) == std::string::npos) unknown.push_back("--" + (*m)[1]);
+    } else if (pathlike.matches(span) && (span.find('/') != std::string::npos || kExtension.found_in(span))) {
         if (span[0] != '.')  // a bare extension (.md) is no file
             for (const std::string& p : expand(span))
                 if (!known_path(p, page, tree)) unknown.push_back(p);
-    } else if (std::regex_match(span, m, identifier)) {
-        std::string parts = m[1];
+    } else if ((m = identifier.match_of(span))) {
+        const std::string parts = (*m)[1];
         for (std::size_t start = 0;;) {
             const auto end = parts.find("::", start);
             std::string part = parts.substr(start, end == std::string::npos ? std::string::npos : end - start);
@@ -114,10 +114,10 @@ std::vector<std::string> unknown_in(const std::string& span, const std::string& 
             if (end == std::string::npos) break;
             start = end + 2;
         }
-    } else if (std::regex_match(span, m, quoted) || std::regex_match(span, m, hyphenated)) {
-        if (tree.text.find(m[1].str()) == std::string::npos) unknown.push_back(m[1]);
-    } else if (std::regex_search(span, m, assignment)) {
-        if (!known_word(m[1], tree)) unknown.push_back(m[1]);
+    } else if ((m = quoted.match_of(span)) || (m = hyphenated.match_of(span))) {
+        if (tree.text.find((*m)[1]) == std::string::npos) unknown.push_back((*m)[1]);
+    } else if ((m = assignment.first_in(span))) {
+        if (!known_word((*m)[1], tree)) unknown.push_back((*m)[1]);
     }
     return unknown;
 }
@@ -142,7 +142,7 @@ TreeNames tree_names(const fs::path& root) {
 }
 
 std::vector<Finding> unknown_names(const std::string& text, const std::string& page, const TreeNames& tree) {
-    static const std::regex span(R"(`([^`]+)`)");
+    static const Pattern span(R"(`([^`]+)`)");
     std::vector<Finding> found;
     std::istringstream in(text);
     int number = 0;
@@ -153,9 +153,9 @@ std::vector<Finding> unknown_names(const std::string& text, const std::string& p
         if (line.find("**Your turn.**") != std::string::npos) exercise = true;
         if (line.find_first_not_of(" \t") == std::string::npos) exercise = false;
         if (fenced || exercise) continue;
-        for (std::sregex_iterator it(line.begin(), line.end(), span), end; it != end; ++it)
-            for (const std::string& name : unknown_in((*it)[1], page, tree))
-                found.push_back({number, "unknown name", "`" + (*it)[1].str() + "`: " + name});
+        for (const PatternMatch& m : span.all_in(line))
+            for (const std::string& name : unknown_in(m[1], page, tree))
+                found.push_back({number, "unknown name", "`" + m[1] + "`: " + name});
     }
     return found;
 }
