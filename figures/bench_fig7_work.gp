@@ -17,7 +17,7 @@ set logscale xy
 set format x "%g"
 set format y "%g"
 set xlabel "CPU time of the run, all threads [s]"
-set key top right font ",9" opaque
+set key bottom left font ",9" opaque
 array cols[4] = [6, 8, 7, 11]
 array titles[4] = ["(a) dynamic angle of repose: |angle - reference| [deg]", "(b) segregation index: |index - reference|", \
                    "(c) flowing-layer thickness: |layer - reference| [mm]", "(d) core: |share - reference|"]
@@ -28,10 +28,12 @@ do for [i = 1:4] {
     c = cols[i]
     set title titles[i]
     set ylabel "error"
+    set autoscale y
     stats f u (column(c + 8)) nooutput
     set object 4 rect from graph 0, graph 0 to graph 1, first STATS_max fc rgb "gray80" fs transparent solid 0.4 noborder behind
     set label 4 "below: within the reference's uncertainty" at graph 0.98, first STATS_max right offset 0,-0.8 font ",9"
     if (i <= 2) {
+        set yrange [*:3 * tol_quick[i]]  # the tolerance lines and their labels inside the frame
         set arrow 1 from graph 0, first tol_quick[i] to graph 1, first tol_quick[i] nohead dt 3 lc rgb "gray30"
         set arrow 2 from graph 0, first tol_figure[i] to graph 1, first tol_figure[i] nohead dt 2 lc rgb "black"
         set arrow 3 from graph 0, first tol_paper[i] to graph 1, first tol_paper[i] nohead dt 4 lc rgb "gray30"
