@@ -11,9 +11,10 @@
 #include <string>
 
 namespace fs = std::filesystem;
-using namespace granseg::verify::docs;
 
 BOOST_AUTO_TEST_SUITE(doc_checks)
+
+using namespace granseg::verify::docs;
 
 BOOST_AUTO_TEST_CASE(numbers_agree_to_the_precision_the_page_prints) {
     const Tokens page = tokens_of("fitted p | 0.9382 | 1");

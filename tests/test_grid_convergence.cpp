@@ -12,9 +12,9 @@
 #include <cmath>
 #include <vector>
 
-using namespace granseg::verify;
-
 BOOST_AUTO_TEST_SUITE(grid_convergence_fit)
+
+using namespace granseg::verify;
 
 namespace {
 double power_law(double f0, double C, double p, double h) { return f0 + C * std::pow(h, p); }

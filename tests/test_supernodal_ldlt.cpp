@@ -20,6 +20,9 @@
 #include <random>
 
 using namespace granseg;
+
+BOOST_AUTO_TEST_SUITE(supernodal_ldlt)
+
 using Matrix = SupernodalLDLT::Matrix;
 
 namespace {
@@ -87,8 +90,6 @@ double difference_from_simplicial(const Matrix& A, bool parallel) {
 }
 
 }  // namespace
-
-BOOST_AUTO_TEST_SUITE(supernodal_ldlt)
 
 // Both factorisations are backward stable: the solutions agree to a modest multiple of the unit
 // round-off times the condition number, here at most ~1e4 (the decades of w) over Phi ~ 0.1 per

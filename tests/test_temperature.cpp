@@ -10,6 +10,8 @@
 
 using namespace granseg;
 
+BOOST_AUTO_TEST_SUITE(temperature)
+
 namespace {
 
 constexpr int kCells = 16;                          // along z; 2 periodic cells along x
@@ -45,8 +47,6 @@ struct Column {
 };
 
 }  // namespace
-
-BOOST_AUTO_TEST_SUITE(temperature)
 
 // Upper half k' = k - kCells/2 = 0 .. m-1 (m = kCells/2), by symmetry about the middle face:
 //   (e + w) T_0 - w T_1 = S,   (e + 2w) T_k' - w (T_k'+1 + T_k'-1) = 0,   adiabatic top (ghost = T_m-1),

@@ -10,6 +10,8 @@
 
 using namespace granseg;
 
+BOOST_AUTO_TEST_SUITE(viscosity)
+
 namespace {
 
 constexpr double kPhi = 0.5, kEta = 1.0, kForce = 1.0, kDt = 1e8;  // dt eta/(Phi h^2) >= 1e8
@@ -50,8 +52,6 @@ double duct_error(int n) {
 }
 
 }  // namespace
-
-BOOST_AUTO_TEST_SUITE(viscosity)
 
 // Second order: the five-point operator and the walls at h/2 (2 eta/h^2) are both O(h^2); the
 // maximum of u is 0.0737 G, so 16 cells should already be within 1e-3 G.

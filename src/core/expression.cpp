@@ -1,6 +1,7 @@
 #include "core/expression.hpp"
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 
 #include <muParser.h>
 
@@ -12,16 +13,6 @@ struct Expression::Impl {
     mu::Parser parser;
     std::vector<double> storage;  // muparser reads the variables through these addresses
 };
-
-namespace {
-
-std::string join(const std::vector<std::string>& names) {
-    std::string out;
-    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
-
-}  // namespace
 
 Expression::Expression(const std::string& text, const std::vector<std::string>& variables)
     : text_(text), variables_(variables), impl_(std::make_unique<Impl>()) {
@@ -35,7 +26,7 @@ Expression::Expression(const std::string& text, const std::vector<std::string>& 
         for (const auto& used : impl_->parser.GetUsedVar()) {
             if (std::find(variables_.begin(), variables_.end(), used.first) == variables_.end())
                 throw InputError("unknown variable \"" + used.first +
-                                            "\" (variables: " + join(variables_) + ")");
+                                            "\" (variables: " + comma_list(variables_) + ")");
         }
         impl_->parser.Eval();  // surfaces remaining syntax errors now, not at first use
     } catch (const mu::Parser::exception_type& e) {

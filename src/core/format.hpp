@@ -14,4 +14,12 @@ inline std::string format_number(double v, int digits = 6) {
     return buf;
 }
 
+/// The names separated by ", ", in the order of the container ("none" if it is empty).
+template <class Names>
+std::string comma_list(const Names& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
+}
+
 }  // namespace granseg

@@ -16,14 +16,10 @@ namespace granseg {
 
 namespace {
 
-std::string join(const std::set<std::string>& names) {
-    std::string out;
-    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
-
-std::string join(const std::vector<std::string>& names) {
-    return join(std::set<std::string>(names.begin(), names.end()));
+/// The names sorted, each once, separated by ", ".
+template <class Names>
+std::string sorted_list(const Names& names) {
+    return comma_list(std::set<std::string>(names.begin(), names.end()));
 }
 
 /// What a TOML node is, for "expected X, got Y" messages.
@@ -150,12 +146,12 @@ bool SceneFile::flag(const std::string& section, const std::string& key, bool fa
 std::string SceneFile::choice(const std::string& section, const std::string& key,
                               const std::vector<std::string>& allowed) const {
     const auto* node = impl_->lookup(section, key);
-    if (!node) fail(section, key, "missing", join(allowed));
-    if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), join(allowed));
+    if (!node) fail(section, key, "missing", sorted_list(allowed));
+    if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), sorted_list(allowed));
     const std::string v = *node->value<std::string>();
     for (const auto& a : allowed)
         if (a == v) return v;
-    fail(section, key, "unknown value \"" + v + "\"", join(allowed));
+    fail(section, key, "unknown value \"" + v + "\"", sorted_list(allowed));
 }
 
 std::string SceneFile::choice(const std::string& section, const std::string& key,
@@ -199,7 +195,7 @@ std::vector<double> SceneFile::numbers(const std::string& section, const std::st
 Expression SceneFile::expression(const std::string& section, const std::string& key,
                                  const std::vector<std::string>& variables) const {
     const auto* node = impl_->lookup(section, key);
-    const std::string allowed = "muparser expression in " + join(variables);
+    const std::string allowed = "muparser expression in " + sorted_list(variables);
     if (!node) fail(section, key, "missing", allowed);
     std::string text;
     if (node->is_string())
@@ -236,20 +232,20 @@ void SceneFile::finish() const {
         const toml::table* table = node.as_table();
         if (!table) {
             problems.push_back({line, name_ + ": " + section +
-                                          ": key outside any section (allowed: sections " + join(sections) + ")"});
+                                          ": key outside any section (allowed: sections " + sorted_list(sections) + ")"});
             continue;
         }
         auto known = impl_->asked.find(section);
         if (known == impl_->asked.end()) {
             problems.push_back({line, name_ + ": [" + section + "]: unknown section (allowed: " +
-                                          join(sections) + ")"});
+                                          sorted_list(sections) + ")"});
             continue;
         }
         for (const auto& [key, value] : *table) {
             if (known->second.count(std::string(key.str()))) continue;
             problems.push_back({value.source().begin.line,
                                 name_ + ": [" + section + "] " + std::string(key.str()) +
-                                    ": unknown key (allowed: " + join(known->second) + ")"});
+                                    ": unknown key (allowed: " + sorted_list(known->second) + ")"});
         }
     }
     if (problems.empty()) return;

@@ -26,14 +26,14 @@ double pressure_residual(double Phi, void* params) {
     return evaluate_closures_at(*e->m, Phi, e->T, e->Phi_rcp, e->Phi_co).p - e->target;
 }
 
-struct Column {
+struct HydrostaticColumn {
     Eos eos;
     double g;
     const std::function<double(double)>* T_of_z;  // or nullptr: T = eos.T
 };
 
 int column_rhs(double z, const double y[], double dydz[], void* params) {
-    Column* c = static_cast<Column*>(params);
+    HydrostaticColumn* c = static_cast<HydrostaticColumn*>(params);
     const double T = c->T_of_z ? (*c->T_of_z)(z) : c->eos.T;
     dydz[0] = -c->g * Phi_of_pressure(*c->eos.m, y[0], T, c->eos.Phi_rcp, c->eos.Phi_co);  // dp/dz
     return GSL_SUCCESS;
@@ -67,7 +67,7 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
                                         double Phi_co, double g, double mass, const std::vector<double>& z,
                                         double* surface) {
     // The bottom carries the whole weight, p(0) = g mass; integrate dp/dz = -g Phi(p) upwards.
-    Column column{{&m, T_of_z(0.0), Phi_rcp, Phi_co, 0.0}, g, &T_of_z};
+    HydrostaticColumn column{{&m, T_of_z(0.0), Phi_rcp, Phi_co, 0.0}, g, &T_of_z};
     gsl_odeiv2_system sys{column_rhs, nullptr, 1, &column};
     std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)> driver(
         gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-7, 1e-13, 1e-12), gsl_odeiv2_driver_free);

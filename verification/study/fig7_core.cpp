@@ -15,7 +15,6 @@ namespace granseg::verify {
 
 namespace {
 
-constexpr int kRing = 3, kPeriphery = 4, kCore = 5, kContrast = 6, kAxis = 7;  // fig7_quantities()
 // c. As verify_tumbler e: the contrast exceeds twice the spread of Phi within a kind and a depth bin.
 constexpr double kContrastSpreads = 2.0;
 // d. "Mainly untouched": more than half of the core's material is still there at t_end.

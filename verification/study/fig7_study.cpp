@@ -211,7 +211,6 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         std::tie(r.points, r.points_sampling) = read("points_core_layer", "points_core_layer", 1.0, false);
     }
     // A tracer run repeats its grid run: its core column carries the tracer's retained share.
-    constexpr int kCore = 5;  // fig7_quantities()
     if (run.kind == Fig7Kind::tracer) r.value[kCore] = r.tracer, r.sampling[kCore] = r.tracer_sampling;
     return r;
 }

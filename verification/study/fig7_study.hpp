@@ -78,6 +78,8 @@ struct Fig7Quantity {
     double lower, upper;  // physical range (in `unit`): an extrapolation outside it is flagged
 };
 constexpr int kFig7Quantities = 8;
+/// Where each quantity sits in fig7_quantities() and in every array indexed like it.
+enum Fig7QuantityIndex : int { kAngle, kLayer, kIndex, kRing, kPeriphery, kCore, kContrast, kAxis };
 const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities();
 
 /// What a run measured.

@@ -10,8 +10,6 @@ namespace granseg::verify {
 
 namespace {
 
-constexpr int kAngle = 0, kLayer = 1, kIndex = 2, kCore = 5;  // fig7_quantities()
-
 std::string series_name(const Fig7Result& r) { return r.run.explicit_steps ? std::string("explicit") : r.run.transport; }
 
 std::string run_text(const Fig7Result& r) {
