@@ -95,7 +95,12 @@ VERIFY_BIN := $(patsubst verification/%.cpp,$(BUILD)/verification/%,$(VERIFY_SRC
 BENCH_BIN  := $(patsubst verification/bench/%.cpp,$(BUILD)/bench/%,$(BENCH_SRC))
 TEST_BIN   := $(BUILD)/tests/unit_tests
 
-VERIFY_NAMES := $(notdir $(VERIFY_BIN))
+# The longest programs (about a minute to half a minute each on one core) first: make starts
+# them as soon as they are linked, and the last programs to finish are short ones, instead of a
+# long one running alone at the end while the other core waits.
+VERIFY_FIRST := verify_flow_rotation verify_flow_order verify_flow_tumbler verify_segregation_stress \
+                verify_tumbler verify_flow_incline
+VERIFY_NAMES := $(filter $(notdir $(VERIFY_BIN)),$(VERIFY_FIRST)) $(filter-out $(VERIFY_FIRST),$(notdir $(VERIFY_BIN)))
 VERIFY_RC    := $(VERIFY_NAMES:%=$(BUILD)/results/%.rc)
 FIG_GP       := $(sort $(wildcard figures/fig*.gp))
 FIG_PNG      := $(FIG_GP:figures/%.gp=$(BUILD)/figures/%.png)
@@ -327,10 +332,11 @@ fig7: deps
 # Keeps going past a program that fails to build, run or render: the summary counts it as failed.
 # One make builds, runs and renders, so that a program runs as soon as it is linked and a figure
 # is drawn as soon as its programs have run: the cores stay busy from the first compile to the
-# last figure.
+# last figure. It also builds the unit tests (make test then only runs them): their compilation
+# fills the cores while the last programs run.
 verify: deps
 	@rm -f $(BUILD)/results/*.rc
-	@$(MAKE) --no-print-directory -k $(PAR) -O $(CLI) run-verification figures || echo "verify: some programs did not build, run or render"
+	@$(MAKE) --no-print-directory -k $(PAR) -O $(CLI) run-verification figures $(TEST_BIN) || echo "verify: some programs did not build, run or render"
 	@$(MAKE) --no-print-directory verify-summary
 
 verify-summary:
