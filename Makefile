@@ -153,8 +153,8 @@ $(BUILD)/obj/src/flow/%.o $(BUILD)/obj/unity/src-flow-%.o: CXXFLAGS += -fno-math
 # programs, their harness, the benchmarks' drivers, the unit tests) at CHECK_OPT: they compile in
 # about a fifth less time, and -O1 computes the same bits as -O2 (no fast-math, no contraction).
 CHECK_OPT ?= -O1
-$(BUILD)/obj/verification/%.o $(BUILD)/obj/tests/%.o: CXXFLAGS += $(CHECK_OPT)
-$(BUILD)/obj/unity/verification-%.o $(BUILD)/obj/unity/tests-%.o: CXXFLAGS += $(CHECK_OPT)
+$(BUILD)/obj/verification/%.o $(BUILD)/obj/tests/%.o: private CXXFLAGS += $(CHECK_OPT)
+$(BUILD)/obj/unity/verification-%.o $(BUILD)/obj/unity/tests-%.o: private CXXFLAGS += $(CHECK_OPT)
 
 $(BUILD)/obj/%.o: %.cpp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
@@ -163,6 +163,19 @@ $(BUILD)/obj/%.o: %.cpp | $(BUILD)/.deps-ok
 $(BUILD)/obj/unity/%.o: $(BUILD)/unity/%.cpp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+# The verification programs compile with a precompiled header of what most of them include
+# (verification/harness/precompiled.hpp, copied into the build tree beside its .gch, the copy
+# used if the .gch cannot be): about 1 s less per program, a third of their compile time.
+VERIFY_PCH := $(BUILD)/obj/pch/precompiled.hpp
+VERIFY_OBJ := $(call obj,$(VERIFY_SRC))
+$(VERIFY_PCH).gch: CXXFLAGS += $(CHECK_OPT)
+$(VERIFY_PCH).gch: verification/harness/precompiled.hpp | $(BUILD)/.deps-ok
+	@mkdir -p $(@D)
+	cp $< $(VERIFY_PCH)
+	$(CXX) $(CPPFLAGS) -MT $@ $(CXXFLAGS) -x c++-header $(VERIFY_PCH) -o $@
+$(VERIFY_OBJ): $(VERIFY_PCH).gch
+$(VERIFY_OBJ): private CPPFLAGS += -include $(VERIFY_PCH) -Winvalid-pch
 
 # Data files under src/ (packing tables, ...) are compiled into the library, so the binaries
 # do not depend on where the source tree is.
