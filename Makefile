@@ -53,9 +53,10 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 # per unit instead of once per file: a clean build takes about half the CPU time. The computed
 # values are the same (no flag changes; inlining across files does not change IEEE arithmetic).
 # A unit is rebuilt when any of its files changes: while editing one file, UNITY=0 compiles file
-# by file. make sanitize and make tsan build with UNITY=0, so every file still compiles on its
-# own. Inside a room, names in unnamed namespaces must differ between files (the compiler says
-# so when they do not); a test file keeps its helpers inside its BOOST_AUTO_TEST_SUITE.
+# by file (and without the verification programs' precompiled header). make sanitize and make
+# tsan build with UNITY=0, so every file still compiles on its own includes. Inside a room, names
+# in unnamed namespaces must differ between files (the compiler says so when they do not); a test
+# file keeps its helpers inside its BOOST_AUTO_TEST_SUITE.
 UNITY ?= 1
 UNITY_FILES ?= 10
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
@@ -166,7 +167,9 @@ $(BUILD)/obj/unity/%.o: $(BUILD)/unity/%.cpp | $(BUILD)/.deps-ok
 
 # The verification programs compile with a precompiled header of what most of them include
 # (verification/harness/precompiled.hpp, copied into the build tree beside its .gch, the copy
-# used if the .gch cannot be): about 1 s less per program, a third of their compile time.
+# used if the .gch cannot be): about 1 s less per program, a third of their compile time. Like
+# the unity units, only with UNITY=1: UNITY=0 compiles every file on its own includes alone.
+ifeq ($(UNITY),1)
 VERIFY_PCH := $(BUILD)/obj/pch/precompiled.hpp
 VERIFY_OBJ := $(call obj,$(VERIFY_SRC))
 $(VERIFY_PCH).gch: CXXFLAGS += $(CHECK_OPT)
@@ -176,6 +179,7 @@ $(VERIFY_PCH).gch: verification/harness/precompiled.hpp | $(BUILD)/.deps-ok
 	$(CXX) $(CPPFLAGS) -MT $@ $(CXXFLAGS) -x c++-header $(VERIFY_PCH) -o $@
 $(VERIFY_OBJ): $(VERIFY_PCH).gch
 $(VERIFY_OBJ): private CPPFLAGS += -include $(VERIFY_PCH) -Winvalid-pch
+endif
 
 # Data files under src/ (packing tables, ...) are compiled into the library, so the binaries
 # do not depend on where the source tree is.
