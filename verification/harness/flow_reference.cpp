@@ -92,7 +92,7 @@ FlowProgram flow_program(int argc, char** argv) {
     return {options, Material::glass_substitute()};
 }
 
-int run_flow_modes(const FlowProgram& program, const std::string& title, FlowModeCheck check) {
+int run_flow_modes(const FlowProgram& program, const std::string& title, const FlowModeCheck& check) {
     CheckTable table(title);
     for (const TimeStepping mode : kFlowModes) check(table, program.options, program.material, mode);
     return table.finish();

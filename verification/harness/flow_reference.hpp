@@ -44,10 +44,10 @@ FlowProgram flow_program(int argc, char** argv);
 inline constexpr TimeStepping kFlowModes[] = {TimeStepping::explicit_waves, TimeStepping::semi_implicit};
 
 /// The checks of one mode: what a flow verification program runs once per mode of kFlowModes.
-using FlowModeCheck = void (*)(CheckTable& table, const ProgramOptions& options, const Material& m, TimeStepping mode);
+using FlowModeCheck = std::function<void(CheckTable& table, const ProgramOptions& options, const Material& m, TimeStepping mode)>;
 
 /// Runs `check` for every mode of kFlowModes into one table titled `title`; returns its exit code.
-int run_flow_modes(const FlowProgram& program, const std::string& title, FlowModeCheck check);
+int run_flow_modes(const FlowProgram& program, const std::string& title, const FlowModeCheck& check);
 
 /// "[explicit] " or "[semi-implicit] ": the prefix of a check's name in a mode.
 std::string mode_tag(TimeStepping mode);
