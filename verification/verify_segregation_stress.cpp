@@ -226,6 +226,8 @@ void stress_drums(Random& r, Tally& tally) {
         const double mass0 = total_amount(grid, phi);
         double violation = 0.0;
         long long bulk_updates = 0;
+        const FlowMesh mesh(grid);  // the mass balance's cell rows, built once for every step
+        BulkTransport bulk(grid);
         const int steps = r.integer(100, 400);
         for (int s = 0; s < steps; ++s) {
             const FaceFields M = rotation ? rotation_M : random_mass_fluxes(r, grid, 0.05);
@@ -235,9 +237,9 @@ void stress_drums(Random& r, Tally& tally) {
             for (dt *= 2.0; Phi_new.empty() || *std::max_element(Phi_new.begin(), Phi_new.end()) > 0.99;) {
                 dt *= 0.5;
                 Phi_new = Phi;
-                apply_mass_fluxes(grid, M, dt, Phi_new);
+                apply_mass_fluxes(mesh, M, dt, Phi_new);
             }
-            transport_bulk(grid, Phi, M, FaceFields{}, dt, phi);
+            bulk.step(Phi, refs(M), FaceFields{}, dt, phi);
             fields.Phi = Phi_new;
             for (std::size_t c = 0; c < Phi_new.size(); ++c) fields.Phi[c] = std::max(0.0, Phi_new[c]);
             double left = dt;  // segregation sub-steps within the bulk step, each within its CFL

@@ -131,7 +131,11 @@ void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double
 }
 
 void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi) {
-    const FlowMesh mesh(grid);
+    apply_mass_fluxes(FlowMesh(grid), M, dt, Phi);
+}
+
+void apply_mass_fluxes(const FlowMesh& mesh, const FaceFields& M, double dt, std::vector<double>& Phi) {
+    const Grid& grid = mesh.grid;
     AxisWeights inv_h = axis_weights(mesh);
     AxisFields fields{};
     for (int a = 0; a < 3; ++a) {

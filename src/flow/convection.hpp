@@ -45,6 +45,8 @@ void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double
 /// of the flow's hand-over (flow/flow_solver.hpp) gets bit for bit as the flow's Phi after the step,
 /// and the mass balance of kinematic set-ups without a flow solver. An empty M[axis] carries
 /// nothing; non-periodic domain-boundary faces count (open boundaries).
+void apply_mass_fluxes(const FlowMesh& mesh, const FaceFields& M, double dt, std::vector<double>& Phi);
+/// The same on the grid's own FlowMesh, built for this one call.
 void apply_mass_fluxes(const Grid& grid, const FaceFields& M, double dt, std::vector<double>& Phi);
 
 }  // namespace granseg
