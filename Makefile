@@ -47,8 +47,8 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 
 # ---- unity build -------------------------------------------------------------------------------
 # By default every folder of sources (a "room": src/flow, src/cli, verification/harness, tests,
-# ...) compiles as a few translation units, each #including up to UNITY_FILES of the room's .cpp
-# files in name order (generated into $(BUILD)/unity/). The headers a room shares (Eigen,
+# ...) compiles as one translation unit that #includes the room's .cpp files in name order
+# (generated into $(BUILD)/unity/); a room of more than UNITY_FILES files splits into equal units. The headers a room shares (Eigen,
 # Boost.Test, toml++, our own) are then parsed and their templates instantiated and optimised once
 # per unit instead of once per file: a clean build takes about half the CPU time. The computed
 # values are the same (no flag changes; inlining across files does not change IEEE arithmetic).
@@ -58,7 +58,7 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 # in unnamed namespaces must differ between files (the compiler says so when they do not); a test
 # file keeps its helpers inside its BOOST_AUTO_TEST_SUITE.
 UNITY ?= 1
-UNITY_FILES ?= 10
+UNITY_FILES ?= 30
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
 # The rooms of a list of files, as names (src/flow/ -> src-flow).
 rooms = $(sort $(patsubst %/,%,$(dir $(1))))
