@@ -48,15 +48,16 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 # ---- unity build -------------------------------------------------------------------------------
 # By default every folder of sources (a "room": src/flow, src/cli, verification/harness, tests,
 # ...) compiles as one translation unit that #includes the room's .cpp files in name order
-# (generated into $(BUILD)/unity/); a room of more than UNITY_FILES files splits into equal units. The headers a room shares (Eigen,
-# Boost.Test, toml++, our own) are then parsed and their templates instantiated and optimised once
-# per unit instead of once per file: a clean build takes about half the CPU time. The computed
-# values are the same (no flag changes; inlining across files does not change IEEE arithmetic).
-# A unit is rebuilt when any of its files changes: while editing one file, UNITY=0 compiles file
-# by file (and without the verification programs' precompiled header). make sanitize and make
-# tsan build with UNITY=0, so every file still compiles on its own includes. Inside a room, names
-# in unnamed namespaces must differ between files (the compiler says so when they do not); a test
-# file keeps its helpers inside its BOOST_AUTO_TEST_SUITE.
+# (generated into $(BUILD)/unity/); a room of more than UNITY_FILES files splits into equal units.
+# The headers a room shares (Eigen, Boost.Test, toml++, our own) are then parsed and their
+# templates instantiated and optimised once per unit instead of once per file: a clean build
+# takes less than half the CPU time. The computed values are the same (no flag changes; inlining
+# across files does not change IEEE arithmetic). A unit is rebuilt when any of its files changes:
+# while editing one file, UNITY=0 compiles file by file (and without the verification programs'
+# precompiled header). make sanitize and make tsan build with UNITY=0, so every file still
+# compiles on its own includes. Inside a room, names in unnamed namespaces must differ between
+# files (the compiler says so when they do not); a test file keeps its helpers inside its
+# BOOST_AUTO_TEST_SUITE.
 UNITY ?= 1
 UNITY_FILES ?= 30
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
@@ -102,6 +103,7 @@ TEST_BIN   := $(BUILD)/tests/unit_tests
 VERIFY_FIRST := verify_flow_rotation verify_flow_order verify_flow_tumbler verify_segregation_stress \
                 verify_tumbler verify_flow_incline
 VERIFY_NAMES := $(filter $(notdir $(VERIFY_BIN)),$(VERIFY_FIRST)) $(filter-out $(VERIFY_FIRST),$(notdir $(VERIFY_BIN)))
+VERIFY_FIRST_BIN := $(filter $(VERIFY_FIRST:%=$(BUILD)/verification/%),$(VERIFY_BIN))
 VERIFY_RC    := $(VERIFY_NAMES:%=$(BUILD)/results/%.rc)
 FIG_GP       := $(sort $(wildcard figures/fig*.gp))
 FIG_PNG      := $(FIG_GP:figures/%.gp=$(BUILD)/figures/%.png)
@@ -246,6 +248,10 @@ $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 	echo $$rc > $@
 
 run-verification: $(VERIFY_RC)
+
+# The list's order alone does not make the longest programs run first (make starts whatever is
+# ready when a core frees up): the other programs link only after them.
+$(filter-out $(VERIFY_FIRST_BIN),$(VERIFY_BIN)): | $(VERIFY_FIRST_BIN)
 
 # verify_docs reads what the other programs wrote (their result logs, the data the reference
 # figures were drawn from), so it runs after all of them.
