@@ -355,11 +355,11 @@ fig7: deps
 # Keeps going past a program that fails to build, run or render: the summary counts it as failed.
 # One make builds, runs and renders, so that a program runs as soon as it is linked and a figure
 # is drawn as soon as its programs have run: the cores stay busy from the first compile to the
-# last figure. It also builds the unit tests (make test then only runs them): their compilation
-# fills the cores while the last programs run.
+# last figure. It also builds the unit tests (make test then only runs them), early: their one
+# unit compiles beside the library's instead of alone after the last program.
 verify: deps
 	@rm -f $(BUILD)/results/*.rc
-	@$(MAKE) --no-print-directory -k $(PAR) -O $(CLI) run-verification figures $(TEST_BIN) || echo "verify: some programs did not build, run or render"
+	@$(MAKE) --no-print-directory -k $(PAR) -O $(CLI) $(TEST_BIN) run-verification figures || echo "verify: some programs did not build, run or render"
 	@$(MAKE) --no-print-directory verify-summary
 
 verify-summary:
