@@ -250,8 +250,10 @@ $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 run-verification: $(VERIFY_RC)
 
 # The list's order alone does not make the longest programs run first (make starts whatever is
-# ready when a core frees up): the other programs link only after them.
+# ready when a core frees up): the other programs link only after them. And make verify's unit
+# tests compile before the programs run (else make leaves them last, one unit alone on a core).
 $(filter-out $(VERIFY_FIRST_BIN),$(VERIFY_BIN)): | $(VERIFY_FIRST_BIN)
+$(VERIFY_FIRST_BIN): | $(TEST_OBJ)
 
 # verify_docs reads what the other programs wrote (their result logs, the data the reference
 # figures were drawn from), so it runs after all of them.
