@@ -249,11 +249,14 @@ $(BUILD)/results/%.rc: $(BUILD)/verification/% $(CLI)
 
 run-verification: $(VERIFY_RC)
 
-# The list's order alone does not make the longest programs run first (make starts whatever is
-# ready when a core frees up): the other programs link only after them. And make verify's unit
-# tests compile before the programs run (else make leaves them last, one unit alone on a core).
+# When all programs run: the list's order alone does not make the longest ones run first (make
+# starts whatever is ready when a core frees up), so the other programs link only after them; and
+# make verify's unit tests compile before the programs run (else make leaves them last, one unit
+# alone on a core). A program built on its own waits for none of this.
+ifneq ($(filter run-verification,$(MAKECMDGOALS)),)
 $(filter-out $(VERIFY_FIRST_BIN),$(VERIFY_BIN)): | $(VERIFY_FIRST_BIN)
-$(VERIFY_FIRST_BIN): | $(TEST_OBJ)
+$(VERIFY_FIRST_BIN): | $(if $(filter $(TEST_BIN),$(MAKECMDGOALS)),$(TEST_OBJ))
+endif
 
 # verify_docs reads what the other programs wrote (their result logs, the data the reference
 # figures were drawn from), so it runs after all of them.
