@@ -48,40 +48,30 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 # ---- unity build -------------------------------------------------------------------------------
 # By default every folder of sources (a "room": src/flow, src/cli, verification/harness, tests,
 # ...) compiles as one translation unit that #includes the room's .cpp files in name order
-# (generated into $(BUILD)/unity/); a room of more than UNITY_FILES files splits into equal units.
-# The headers a room shares (Eigen, Boost.Test, toml++, our own) are then parsed and their
-# templates instantiated and optimised once per unit instead of once per file: a clean build
-# takes less than half the CPU time. The computed values are the same (no flag changes; inlining
-# across files does not change IEEE arithmetic). A unit is rebuilt when any of its files changes:
-# while editing one file, UNITY=0 compiles file by file (and without the verification programs'
-# precompiled header). make sanitize and make tsan build with UNITY=0, so every file still
-# compiles on its own includes. Inside a room, names in unnamed namespaces must differ between
-# files (the compiler says so when they do not); a test file keeps its helpers inside its
-# BOOST_AUTO_TEST_SUITE.
+# (generated into $(BUILD)/unity/). The headers a room shares (Eigen, Boost.Test, toml++, our own)
+# are then parsed and their templates instantiated and optimised once per room instead of once
+# per file: a clean build takes less than half the CPU time. The computed values are the same (no
+# flag changes; inlining across files does not change IEEE arithmetic). A unit is rebuilt when
+# any of its files changes: while editing one file, UNITY=0 compiles file by file (and without
+# the verification programs' precompiled header). make sanitize and make tsan build with UNITY=0,
+# so every file still compiles on its own includes. Inside a room, names in unnamed namespaces
+# must differ between files (the compiler says so when they do not); a test file keeps its
+# helpers inside its BOOST_AUTO_TEST_SUITE.
 UNITY ?= 1
-UNITY_FILES ?= 30
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
-# The rooms of a list of files, as names (src/flow/ -> src-flow).
+# The rooms of a list of files (src/flow/bed.cpp -> src/flow); a room's unit is named src-flow.
 rooms = $(sort $(patsubst %/,%,$(dir $(1))))
-room_name = $(subst /,-,$(1))
-# A room of n files splits into ceil(n / UNITY_FILES) units of equal size (the last one smaller).
-unit_count = $(shell echo $$((($(words $(1)) + $(UNITY_FILES) - 1) / $(UNITY_FILES))))
-unit_size = $(shell echo $$((($(words $(1)) + $(2) - 1) / $(2))))
-unit_files = $(wordlist $(shell echo $$((($(2) - 1) * $(3) + 1))),$(shell echo $$(($(2) * $(3)))),$(1))
-# The unit's source, rewritten only when its list of files changes.
+unit_name = $(subst /,-,$(1))
+# The unit's source for room $(1) of files $(2), rewritten only when its list of files changes.
 define unity_unit
-$(BUILD)/unity/$(1).cpp: FORCE
+$(BUILD)/unity/$(call unit_name,$(1)).cpp: FORCE
 	@mkdir -p $$(@D)
 	@printf '#include "$(CURDIR)/%s"\n' $(2) | cmp -s - $$@ || printf '#include "$(CURDIR)/%s"\n' $(2) > $$@
 endef
-# The objects of a room $(1) of files $(2): one per unit, whose rules this defines.
-define room_objects
-$(foreach k,$(shell seq 1 $(call unit_count,$(2))),$(eval \
-  $(call unity_unit,$(call room_name,$(1))-$(k),$(call unit_files,$(2),$(k),$(call unit_size,$(2),$(call unit_count,$(2)))))) \
-  $(BUILD)/obj/unity/$(call room_name,$(1))-$(k).o)
-endef
-# The objects of a list of files: by room and unit, or one per file with UNITY=0.
-unity_objects = $(if $(filter 1,$(UNITY)),$(foreach r,$(call rooms,$(1)),$(call room_objects,$(r),$(filter $(r)/%,$(1)))),$(call obj,$(1)))
+# The objects of a list of files: one per room (defining the room's unit), or one per file with
+# UNITY=0.
+unity_objects = $(if $(filter 1,$(UNITY)),$(foreach r,$(call rooms,$(1)),$(eval \
+  $(call unity_unit,$(r),$(filter $(r)/%,$(1))))$(BUILD)/obj/unity/$(call unit_name,$(r)).o),$(call obj,$(1)))
 
 LIB_OBJ     := $(call unity_objects,$(LIB_SRC)) $(BUILD)/obj/gen/embedded_data.o
 CLI_OBJ     := $(call unity_objects,$(CLI_SRC))
@@ -150,14 +140,14 @@ $(BUILD)/.deps-ok:
 # The flow solver's cell and face loops vectorise only if sqrt need not set errno and FP
 # operations may be executed speculatively (their discarded results change nothing): neither
 # flag changes a computed value (docs/flow_solver.md, performance).
-$(BUILD)/obj/src/flow/%.o $(BUILD)/obj/unity/src-flow-%.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
+$(BUILD)/obj/src/flow/%.o $(BUILD)/obj/unity/src-flow.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
 
 # The library, where runs spend their time, at $(OPT); the programs that check it (verification
 # programs, their harness, the benchmarks' drivers, the unit tests) at CHECK_OPT: they compile in
 # about a fifth less time, and -O1 computes the same bits as -O2 (no fast-math, no contraction).
 CHECK_OPT ?= -O1
 $(BUILD)/obj/verification/%.o $(BUILD)/obj/tests/%.o: private CXXFLAGS += $(CHECK_OPT)
-$(BUILD)/obj/unity/verification-%.o $(BUILD)/obj/unity/tests-%.o: private CXXFLAGS += $(CHECK_OPT)
+$(BUILD)/obj/unity/verification-%.o $(BUILD)/obj/unity/tests.o: private CXXFLAGS += $(CHECK_OPT)
 
 $(BUILD)/obj/%.o: %.cpp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
