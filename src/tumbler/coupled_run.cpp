@@ -95,7 +95,6 @@ OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& 
     const auto due = [&](double next) { return flow.time() >= next - 1e-12 || flow.time() >= t_end; };
     const auto sample = [&] {
         if (!due(next_history) && !(options.run.vtk && due(next_snapshot)) && !due(next_frame)) return;
-        tumbler.synchronise();
         if (due(next_history)) {
             next_history += kDrumHistoryInterval;
             const std::array<double, 2> amount = phase_amounts(tumbler);
