@@ -115,10 +115,12 @@ BOOST_AUTO_TEST_CASE(sources_read_lines_table_cells_and_data_columns) {
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"d. pattern\" #-1", error), log, error) == 0.9357);
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"d. pattern\" #2", error), log, error) == 0.89);
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"index\"", error), log, error) == 0.89);  // after MATCH
+    BOOST_TEST(*source_value(*parse_source("build/results/v.log \"ring\"~2", error), log, error) == 0.9357);  // the second line
+    BOOST_TEST(!source_value(*parse_source("build/results/v.log \"ring\"~3", error), log, error).has_value());
     BOOST_TEST(!source_value(*parse_source("build/results/v.log \"d. pattern\" #4", error), log, error).has_value());
     BOOST_TEST(!source_value(*parse_source("build/results/v.log \"no such line\"", error), log, error).has_value());
-    const std::string table = "| quantity | at 100 cells | limit |\n|---|---|---|\n| angle (deg) | 23.4 ± 0.02 | – |\n"
-                              "| index | 0.936 ± 0.001 | 0.95 |\n\nFootnote 7.\n";
+    const std::string table = "| quantity | at 100 cells | distance to the limit | limit |\n|---|---|---|---|\n"
+                              "| angle (deg) | 23.4 ± 0.02 | – | – |\n| index | 0.936 ± 0.001 | -0.014 | 0.95 |\n\nFootnote 7.\n";
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"index\" | limit", error), table, error) == 0.95);
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"angle\" | at 100 #2 *10", error), table, error) == 0.2);
     BOOST_TEST(!source_value(*parse_source("docs/t.md \"angle\" | limit", error), table, error).has_value());  // a dash
@@ -129,6 +131,29 @@ BOOST_AUTO_TEST_CASE(sources_read_lines_table_cells_and_data_columns) {
     BOOST_TEST(*source_value(*parse_source("build/d.dat:angle@cells=50", error), dat, error) == 23.5);
     BOOST_TEST(!source_value(*parse_source("build/d.dat:wall@last", error), dat, error).has_value());
     BOOST_TEST(!source_value(*parse_source("build/d.dat:angle@4", error), dat, error).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(spans_resolve_against_their_files_and_differences) {
+    const fs::path root = fs::temp_directory_path() / "granseg_test_spans";
+    fs::create_directories(root / "docs" / "generated");
+    fs::create_directories(root / "build" / "results");
+    std::ofstream(root / "docs" / "generated" / "t.md") << "| q | a | b |\n|---|---|---|\n| x | 23.51 | 23.31 |\n";
+    std::ofstream(root / "build" / "results" / "v.log") << "steps: 12503\n";
+    const std::string page = "<!-- value: docs/generated/t.md \"x\" | b - docs/generated/t.md \"x\" | a -->-0.20<!-- /value -->\n"
+                             "<!-- value: build/results/v.log \"steps:\" + docs/generated/t.md \"x\" | a -->12526.51<!-- /value -->\n"
+                             "<!-- value: build/results/w.log \"steps:\" -->1<!-- /value -->\n"
+                             "```output\nflux = -0.125\n```\nso <!-- value: output \"flux = \" -->-0.125<!-- /value -->\n";
+    std::string error;
+    const auto spans = resolved_spans(page, root, root / "build", error);
+    fs::remove_all(root);
+    BOOST_TEST(error.empty());
+    BOOST_TEST_REQUIRE(spans.size() == 4u);
+    BOOST_TEST(*spans[3].value == -0.125);  // the output block above
+    BOOST_TEST_REQUIRE(spans[0].value.has_value());
+    BOOST_TEST(shows(*shown_number(spans[0].span.text), *spans[0].value));
+    BOOST_TEST(*spans[1].value == 12503.0 + 23.51);
+    BOOST_TEST(!spans[2].value.has_value());
+    BOOST_TEST(spans[2].error.find("make verify") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_span_shows_its_value_to_its_own_precision) {

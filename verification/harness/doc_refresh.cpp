@@ -12,10 +12,12 @@ namespace fs = std::filesystem;
 namespace granseg::verify::docs {
 
 fs::path fresh_table(const fs::path& build, const std::string& name) {
-    for (const char* dir : {"data", "bench-data"})
+    for (const char* dir : {"data", "bench-data", "runs"})
         if (fs::exists(build / dir / name)) return build / dir / name;
     return {};
 }
+
+bool compared(const std::string& name) { return name.size() < 8 || name.compare(name.size() - 8, 8, "_cost.md") != 0; }
 
 int refresh_pages(const fs::path& root, const fs::path& build, const std::vector<std::string>& pages) {
     for (const auto& e : fs::directory_iterator(root / "docs" / "generated")) {

@@ -47,9 +47,11 @@ std::optional<double> nth_number(const std::string& text, int n, std::string& er
 
 std::optional<double> text_value(const ValueSource& s, const std::string& file_text, std::string& error) {
     const std::vector<std::string> lines = lines_of(file_text);
-    const auto hit = std::find_if(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(s.match) != std::string::npos; });
+    int seen = 0;
+    const auto hit = std::find_if(lines.begin(), lines.end(),
+                                  [&](const std::string& l) { return l.find(s.match) != std::string::npos && ++seen == s.occurrence; });
     if (hit == lines.end()) {
-        error = "no line containing \"" + s.match + "\"";
+        error = "no line " + std::to_string(s.occurrence) + " containing \"" + s.match + "\"";
         return std::nullopt;
     }
     if (s.column.empty()) return nth_number(hit->substr(hit->find(s.match) + s.match.size()), s.number, error);
@@ -57,7 +59,10 @@ std::optional<double> text_value(const ValueSource& s, const std::string& file_t
     auto header = hit;
     while (header != lines.begin() && trimmed(*(header - 1)).rfind('|', 0) == 0) --header;
     const std::vector<std::string> names = cells_of(*header), cells = cells_of(*hit);
-    const auto column = std::find_if(names.begin(), names.end(), [&](const std::string& c) { return c.find(s.column) != std::string::npos; });
+    // The header equal to COLUMN, else the first that contains it.
+    auto column = std::find(names.begin(), names.end(), s.column);
+    if (column == names.end())
+        column = std::find_if(names.begin(), names.end(), [&](const std::string& c) { return c.find(s.column) != std::string::npos; });
     if (trimmed(*hit).rfind('|', 0) != 0 || column == names.end()) {
         error = "no table column \"" + s.column + "\" for the line containing \"" + s.match + "\"";
         return std::nullopt;
@@ -150,14 +155,15 @@ std::vector<ValueSpan> value_spans(const std::string& page, std::string& error) 
 }
 
 std::optional<ValueSource> parse_source(const std::string& source, std::string& error) {
-    static const Pattern text(R"re(^\s*(\S+)\s+"([^"]+)"\s*(?:\|\s*(.*?))?\s*(?:#(-?\d+))?\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
+    static const Pattern text(R"re(^\s*(\S+)\s+"([^"]+)"(?:~(\d+))?\s*(?:\|\s*(.*?))?\s*(?:#(-?\d+))?\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
     static const Pattern data(R"re(^\s*([^:\s]+):([^@\s]+)@(\S+)\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
     ValueSource s;
     std::string op, factor;
     if (const auto m = text.match_of(source)) {
-        s.file = (*m)[1], s.match = (*m)[2], s.column = trimmed((*m)[3]);
-        if (m->took_part[4]) s.number = std::stoi((*m)[4]);
-        op = (*m)[5], factor = (*m)[6];
+        s.file = (*m)[1], s.match = (*m)[2], s.column = trimmed((*m)[4]);
+        if (m->took_part[3]) s.occurrence = std::stoi((*m)[3]);
+        if (m->took_part[5]) s.number = std::stoi((*m)[5]);
+        op = (*m)[6], factor = (*m)[7];
     } else if (const auto d = data.match_of(source)) {
         s.data = true, s.file = (*d)[1], s.column = (*d)[2], s.row = (*d)[3], op = (*d)[4], factor = (*d)[5];
     } else {
@@ -173,8 +179,8 @@ std::optional<ValueSource> parse_source(const std::string& source, std::string& 
         }
         s.scale = op == "*" ? k : 1.0 / k;
     }
-    if (s.file.rfind("docs/", 0) != 0 && s.file.rfind("build/", 0) != 0) {
-        error = "source file " + s.file + " is neither under docs/ nor under build/";
+    if (s.file != "output" && s.file.rfind("docs/", 0) != 0 && s.file.rfind("build/", 0) != 0) {
+        error = "source file " + s.file + " is neither under docs/ nor under build/, nor the output block above";
         return std::nullopt;
     }
     return s;
@@ -241,16 +247,54 @@ std::string with_values(const std::string& page, const std::vector<ResolvedSpan>
     return out;
 }
 
+namespace {
+
+/// The text of the last output block that ends before `line` (1-based) of the page, or nothing.
+std::optional<std::string> output_block_before(const std::string& page, int line) {
+    std::optional<std::string> text;
+    for (const Block& b : fenced_blocks(page)) {
+        if (b.first_line + static_cast<int>(b.lines.size()) + 1 >= line) break;
+        if (b.language != "output") continue;
+        text = "";
+        for (const std::string& l : b.lines) *text += l + "\n";
+    }
+    return text;
+}
+
+std::optional<double> resolved(const std::string& source_text, const std::string& page, int line, const fs::path& root,
+                               const fs::path& build, std::string& error) {
+    const auto source = parse_source(source_text, error);
+    if (!source) return std::nullopt;
+    if (source->file == "output") {
+        const auto block = output_block_before(page, line);
+        if (block) return source_value(*source, *block, error);
+        error = "no output block above the span";
+        return std::nullopt;
+    }
+    const fs::path file = source->file.rfind("build/", 0) == 0 ? build / source->file.substr(6) : root / source->file;
+    bool found = false;
+    const std::string text = read_text(file, &found);
+    if (found) return source_value(*source, text, error);
+    error = "no file " + source->file + (source->file.rfind("build/", 0) == 0 ? " (run make verify first)" : "");
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<ResolvedSpan> resolved_spans(const std::string& page, const fs::path& root, const fs::path& build, std::string& error) {
     std::vector<ResolvedSpan> out;
     for (const ValueSpan& span : value_spans(page, error)) {
         ResolvedSpan r{span, std::nullopt, ""};
-        if (const auto source = parse_source(span.source, r.error)) {
-            const fs::path file = source->file.rfind("build/", 0) == 0 ? build / source->file.substr(6) : root / source->file;
-            bool found = false;
-            const std::string text = read_text(file, &found);
-            if (!found) r.error = "no file " + source->file + (source->file.rfind("build/", 0) == 0 ? " (run make verify first)" : "");
-            else r.value = source_value(*source, text, r.error);
+        // SOURCE - SOURCE, SOURCE + SOURCE: the difference or the sum of two values.
+        std::size_t op = std::string::npos;
+        for (const char* sign : {" - ", " + "})
+            for (const char* next : {"docs/", "build/", "output "}) op = std::min(op, span.source.find(sign + std::string(next)));
+        if (op == std::string::npos) {
+            r.value = resolved(span.source, page, span.line, root, build, r.error);
+        } else {
+            const auto a = resolved(span.source.substr(0, op), page, span.line, root, build, r.error);
+            const auto b = a ? resolved(span.source.substr(op + 3), page, span.line, root, build, r.error) : std::nullopt;
+            if (a && b) r.value = span.source[op + 1] == '-' ? *a - *b : *a + *b;
         }
         out.push_back(r);
     }

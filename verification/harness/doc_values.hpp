@@ -10,13 +10,19 @@
 // SOURCE, one of
 //   FILE "MATCH" [#N] [SCALE]           a text file (a program's log, a generated table): the
 //                                       first line containing MATCH, the N-th number after
-//                                       MATCH on it (1 the first, the default; -1 the last)
+//                                       MATCH on it (1 the first, the default; -1 the last);
+//                                       "MATCH"~K takes the K-th line containing MATCH
 //   FILE "MATCH" | COLUMN [#N] [SCALE]  a markdown table: the row containing MATCH, the cell
-//                                       under the first header containing COLUMN, its N-th number
+//                                       under the header COLUMN (else the first header containing
+//                                       it), its N-th number
 //   FILE:COLUMN@ROW [SCALE]             a data file (.dat: a "# name name ..." header line, rows
 //                                       of numbers): column COLUMN of data row ROW, which is
 //                                       "last", a number from 1, or KEY=VALUE (the first row
 //                                       whose column KEY holds VALUE)
+// and SOURCE - SOURCE or SOURCE + SOURCE, the difference or the sum of two values (a change, a
+// distance to a limit, the end of a band). FILE may
+// also be `output`: the page's last output block above the span, which verify_docs checks
+// against what its command printed (a page restating a number its own block shows).
 // FILE is a path from the top of the repository: docs/generated/NAME.md (committed; verify_docs
 // ties it to its program's fresh output), build/results/NAME.log and build/data/... (written by
 // make verify). SCALE is *K or /K (a percentage: *100). Numbers are counted as the output-block
@@ -49,6 +55,7 @@ struct ValueSource {
     std::string column;  // a markdown table's header, or a data file's column name
     std::string row;     // data files: "last", "N" or "KEY=VALUE"
     int number = 1;      // which number of the line or cell; negative from the end
+    int occurrence = 1;  // text sources: which line containing `match` ("MATCH"~2: the second)
     double scale = 1.0;
     bool data = false;   // FILE:COLUMN@ROW
 };
