@@ -59,7 +59,7 @@ TEST_SRC    := $(sort $(wildcard tests/*.cpp))
 # helpers inside its BOOST_AUTO_TEST_SUITE.
 UNITY ?= 1
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
-# The rooms of a list of files (src/flow/bed.cpp -> src/flow); a room's unit is named src-flow.
+# The rooms of a list of files (src/flow/time_step.cpp -> src/flow); a room's unit is named src-flow.
 rooms = $(sort $(patsubst %/,%,$(dir $(1))))
 unit_name = $(subst /,-,$(1))
 # The unit's source for room $(1) of files $(2), rewritten only when its list of files changes.
@@ -137,10 +137,12 @@ $(BUILD)/.deps-ok:
 	$(check_debian_packages)
 
 # ---- compilation -------------------------------------------------------------------------------
-# The flow solver's cell and face loops vectorise only if sqrt need not set errno and FP
-# operations may be executed speculatively (their discarded results change nothing): neither
-# flag changes a computed value (docs/flow_solver.md, performance).
-$(BUILD)/obj/src/flow/%.o $(BUILD)/obj/unity/src-flow.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
+# The flow solver's cell and face loops (src/flow*/) and the linear algebra under them (src/linalg/)
+# vectorise only if sqrt need not set errno and FP operations may be executed speculatively (their
+# discarded results change nothing): neither flag changes a computed value (docs/flow_solver.md,
+# performance).
+$(BUILD)/obj/src/flow%.o $(BUILD)/obj/src/linalg/%.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
+$(BUILD)/obj/unity/src-flow.o $(BUILD)/obj/unity/src-flow_%.o $(BUILD)/obj/unity/src-linalg.o: CXXFLAGS += -fno-math-errno -fno-trapping-math
 
 # The library, where runs spend their time, at $(OPT); the programs that check it (verification
 # programs, their harness, the benchmarks' drivers, the unit tests) at CHECK_OPT: they compile in

@@ -2,7 +2,7 @@
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
 // repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, a passive
 // tracer riding in a segregating drum, and a drum of one phase only.
-#include "flow/bed.hpp"
+#include "flow_run/bed.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
 #include "tumbler/coupled_run.hpp"

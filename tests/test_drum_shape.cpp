@@ -1,9 +1,9 @@
 // Drum cross-sections (core/drum_shape.hpp) against closed forms, and the drum's grid and
-// surface for them (flow/bed.hpp drum_grid, tumbler/drum.hpp). Tolerances: a few roundings of
+// surface for them (flow_run/bed.hpp drum_grid, tumbler/drum.hpp). Tolerances: a few roundings of
 // numbers of size R (1e-14 relative); the bisection of surface_offset stops at 4e-16 R.
 #include "core/drum_shape.hpp"
 #include "core/error.hpp"
-#include "flow/bed.hpp"
+#include "flow_run/bed.hpp"
 #include "tumbler/drum.hpp"
 
 #include <boost/test/unit_test.hpp>

@@ -1,16 +1,16 @@
 // Building blocks of the flow solver (src/flow/): the HLLC flux, the hydrostatic reconstruction,
 // the batched line solver, the rotating frame, the drum geometry, and the inverse equation of
 // state and the dust faces of the semi-implicit step.
-#include "flow/bed.hpp"
-#include "flow/equation_of_state.hpp"
-#include "flow/flow_output.hpp"
-#include "flow/flow_solver.hpp"
-#include "flow/frame.hpp"
-#include "flow/hllc.hpp"
-#include "flow/line_solver.hpp"
-#include "flow/semi_implicit.hpp"
 #include "core/error.hpp"
 #include "core/scene_file.hpp"
+#include "flow/flow_solver.hpp"
+#include "flow_faces/hllc.hpp"
+#include "flow_faces/semi_implicit_faces.hpp"
+#include "flow_fields/frame.hpp"
+#include "flow_pressure/equation_of_state.hpp"
+#include "flow_run/bed.hpp"
+#include "flow_run/flow_output.hpp"
+#include "linalg/tridiagonal_lines.hpp"
 #include "scenes/flow_scenes.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -84,15 +84,15 @@ BOOST_AUTO_TEST_CASE(hydrostatic_reconstruction_bounds) {
     BOOST_TEST(unsupported_load(0.3, 1e-12, 0.005) == 0.3 * 0.005 - 1e-12, tt::tolerance(1e-14));
 }
 
-/// Solves the lines of a grid with LineSolver and compares each line with a dense solve.
-double line_solver_error(Grid g, int axis, unsigned seed) {
+/// Solves the lines of a grid with TridiagonalLines and compares each line with a dense solve.
+double tridiagonal_lines_error(Grid g, int axis, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> W(0.0, 5.0), R(-1.0, 1.0);
     const std::size_t cells = g.cells();
     std::vector<double> lower(cells), diag(cells), upper(cells), x(cells);
     for (std::size_t c = 0; c < cells; ++c) lower[c] = W(rng), upper[c] = W(rng), diag[c] = 1.0 + lower[c] + upper[c] + W(rng), x[c] = R(rng);
     const std::vector<double> rhs = x;
-    LineSolver solver;
+    TridiagonalLines solver;
     solver.factor(g, axis, lower, diag, upper);
     solver.solve(x);
     // Dense check, line by line: diag x - lower x_prev - upper x_next = rhs (periodic wrap).
@@ -117,17 +117,17 @@ double line_solver_error(Grid g, int axis, unsigned seed) {
     return worst;
 }
 
-BOOST_AUTO_TEST_CASE(line_solver_matches_dense_solves) {
+BOOST_AUTO_TEST_CASE(tridiagonal_lines_match_dense_solves) {
     Grid g = Grid::plane_xz(7, 6, 0, 0, 1, 1);
     g.n[1] = 5;
-    BOOST_TEST(line_solver_error(g, 0, 1) < 1e-13);
-    BOOST_TEST(line_solver_error(g, 1, 2) < 1e-13);
-    BOOST_TEST(line_solver_error(g, 2, 3) < 1e-13);
+    BOOST_TEST(tridiagonal_lines_error(g, 0, 1) < 1e-13);
+    BOOST_TEST(tridiagonal_lines_error(g, 1, 2) < 1e-13);
+    BOOST_TEST(tridiagonal_lines_error(g, 2, 3) < 1e-13);
     for (int n : {2, 3, 5}) {  // periodic: merged faces (2) and Sherman-Morrison (3, 5)
         Grid p = Grid::plane_xz(4, 3, 0, 0, 1, 1);
         p.n[1] = n;
         p.periodic[1] = true;
-        BOOST_TEST(line_solver_error(p, 1, 10 + n) < 1e-13);
+        BOOST_TEST(tridiagonal_lines_error(p, 1, 10 + n) < 1e-13);
     }
 }
 

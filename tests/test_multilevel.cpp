@@ -1,9 +1,9 @@
-// The multilevel preconditioner of the pressure solve (flow/multilevel.hpp) on a model of the
+// The multilevel preconditioner of the pressure solve (linalg/multilevel.hpp) on a model of the
 // drum's Jacobian J = diag(dPhi/dp) + K: the inside cells of a disc on an n x n grid, faces of
 // the bed (the lower 75 % of the disc) with weights K_f = (c dt/h)^2 w_f, w_f in [0.8, 1.2] like
 // Phi_donor/Phi_face, and weight 0 on every face that touches the dust above; diagonal 1.
 // c dt is a fixed fraction of the diameter, so c dt/h grows like n, as in the drum at a fixed dt.
-#include "flow/multilevel.hpp"
+#include "linalg/multilevel.hpp"
 
 #include <boost/test/unit_test.hpp>
 

@@ -1,4 +1,4 @@
-// The pressure solve's rules (flow/pressure_solver.hpp) on systems whose answers are known: one
+// The pressure solve's rules (flow_pressure/pressure_solver.hpp) on systems whose answers are known: one
 // cell (the Jacobian is 1 x 1, each conjugate-gradient solve exact, so the Newton iterates are
 // those of the scalar equation Phi(p + dp) - Phi(p) - r = 0, computed here from the equation of
 // state), and a column of cells without coupling (each row its own scalar equation).
@@ -9,8 +9,8 @@
 //   - the kink rule: a cell on the stiff branch (Phi > Phi_co) whose step would cross the kink
 //     moves by the step in Phi, which for one cell lands on the root at once.
 #include "closures/closures.hpp"
-#include "flow/equation_of_state.hpp"
-#include "flow/pressure_solver.hpp"
+#include "flow_pressure/equation_of_state.hpp"
+#include "flow_pressure/pressure_solver.hpp"
 
 #include <boost/test/unit_test.hpp>
 

@@ -1,8 +1,8 @@
 // The segregation modules on small hand-checkable grids: face visiting, eq. (64), the time step,
 // the reconstruction, and the configuration the kinematic drum reuses unchanged (a drum-shaped inside
 // mask, coefficients of random sign, a stream-function flow, compressible mass fluxes).
-#include "flow/convection.hpp"
 #include "core/error.hpp"
+#include "flow_faces/convection.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/column.hpp"
 #include "segregation/invariants.hpp"

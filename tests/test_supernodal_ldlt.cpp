@@ -1,4 +1,4 @@
-// The supernodal LDL^T of the coupled viscosity (flow/supernodal_ldlt.hpp) against Eigen's
+// The supernodal LDL^T of the coupled viscosity (linalg/supernodal_ldlt.hpp) against Eigen's
 // simplicial LDL^T (a different algorithm on the same matrix): viscosity-like matrices
 // Phi + dt div(eta grad) on a disc and on a 3-D box, with eta spread over four decades and
 // decoupled identity rows (empty cells); factorised again with new values over eight decades (the
@@ -6,7 +6,7 @@
 // or one after the other give the same bits; a matrix that is not positive definite is refused,
 // in a wide panel (dense Cholesky) and in a narrow one (column by column); Eigen's products in a
 // lane open no threads of their own.
-#include "flow/supernodal_ldlt.hpp"
+#include "linalg/supernodal_ldlt.hpp"
 
 #include <boost/test/unit_test.hpp>
 

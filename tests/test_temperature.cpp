@@ -1,8 +1,8 @@
-// The temperature step (flow/temperature.hpp) against exact discrete solutions: heating,
+// The temperature step (flow_diffusion/temperature.hpp) against exact discrete solutions: heating,
 // dissipation and conduction solved together. One long step must give the steady balance of a
 // sheared layer heated at one face, where the heat reaches only a few cells before dissipation
 // takes it (conducting first and dissipating after would spread it over the whole column).
-#include "flow/temperature.hpp"
+#include "flow_diffusion/temperature.hpp"
 
 #include <boost/test/unit_test.hpp>
 

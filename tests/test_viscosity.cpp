@@ -1,8 +1,8 @@
-// The coupled implicit viscosity (flow/coupled_viscosity.hpp) against exact steady creep: with a
+// The coupled implicit viscosity (flow_diffusion/coupled_viscosity.hpp) against exact steady creep: with a
 // step much longer than the viscous time, Phi u_new - dt div(eta grad u_new) = Phi u solves
 // div(eta grad u) = -Phi f for the impulse Phi u = dt Phi f, up to Phi/(dt eta k^2) ~ 1e-9.
-#include "flow/coupled_viscosity.hpp"
-#include "flow/viscosity.hpp"
+#include "flow_diffusion/coupled_viscosity.hpp"
+#include "flow_diffusion/viscosity.hpp"
 
 #include <boost/test/unit_test.hpp>
 

@@ -316,7 +316,7 @@ void check_detectors(CheckTable& t, const TreeNames& tree) {
     const std::string invented = std::string("`FlowSolver::nonexis") + "tent_stage()`\n`make nonexis" + "tent-target`\n" +
                                  "`src/flow/nonexis" + "tent_file.cpp`\n`[flow] nonexis" + "tent_key = 1`\n`--nonexis" +
                                  "tent-option`\n";
-    const std::string real = "`FlowSolver::step()`\n`make verify`\n`src/flow/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
+    const std::string real = "`FlowSolver::step()`\n`make verify`\n`src/flow_pressure/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
                              "`--data`\n`steps_dt_max`\n`time = 1.5 s`\n";
     t.count("detector self-check: invented names flagged (of 5)", static_cast<long>(unknown_names(invented, "docs/x.md", tree).size()), 5);
     t.count("detector self-check: existing names flagged", static_cast<long>(unknown_names(real, "docs/x.md", tree).size()), 0);

@@ -15,8 +15,8 @@
 //
 // Run: build/verification/verify_drum_shapes [--data DIR]   (a few seconds)
 #include "core/scene_file.hpp"
-#include "flow/bed.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/bed.hpp"
+#include "flow_run/flow_output.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"

@@ -29,9 +29,9 @@
 // Writes transport_orders.dat.
 //
 // Run: build/verification/verify_transport [--data DIR]   (a few seconds)
-#include "flow/convection.hpp"
 #include "core/error.hpp"
 #include "flow/flow_solver.hpp"
+#include "flow_faces/convection.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"

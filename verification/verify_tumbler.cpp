@@ -26,7 +26,7 @@
 #include "closures/closures.hpp"
 #include "core/scene_file.hpp"
 #include "direction/segregation_direction.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/flow_output.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "scenes/tumbler.hpp"

@@ -3,7 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "closures/material.hpp"
-#include "flow/flow_settings.hpp"
+#include "flow_fields/flow_settings.hpp"
 #include "scenes/scene_kind.hpp"
 #include "segregation/column.hpp"
 #include "segregation/scheme.hpp"

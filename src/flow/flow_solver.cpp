@@ -5,11 +5,11 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/threads.hpp"
-#include "flow/convection.hpp"
-#include "flow/loads.hpp"
-#include "flow/primitives.hpp"
 #include "flow/velocity_gradient.hpp"
-#include "flow/viscosity.hpp"
+#include "flow_diffusion/viscosity.hpp"
+#include "flow_faces/convection.hpp"
+#include "flow_faces/loads.hpp"
+#include "flow_fields/primitives.hpp"
 
 #include <cmath>
 #include <functional>

@@ -4,7 +4,7 @@
 
 #include "closures/closures.hpp"
 #include "core/format.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/flow_output.hpp"
 #include "scenes/material_section.hpp"
 
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "scenes/flow_scenes.hpp"
 
 #include "core/format.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/flow_output.hpp"
 #include "scenes/material_section.hpp"
 
 #include <algorithm>

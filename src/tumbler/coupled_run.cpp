@@ -4,7 +4,7 @@
 #include "core/format.hpp"
 #include "core/progress.hpp"
 #include "core/threads.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/flow_output.hpp"
 #include "segregation/invariants.hpp"
 #include "tumbler/coupled_tables.hpp"
 #include "tumbler/layer_regions.hpp"

@@ -1,7 +1,7 @@
 #include "tumbler/coupled_tables.hpp"
 
 #include "core/format.hpp"
-#include "flow/flow_output.hpp"
+#include "flow_run/flow_output.hpp"
 #include "tumbler/tumbler_tables.hpp"
 
 #include <sstream>

@@ -37,7 +37,7 @@ struct DrumSpec {
     DrumShape cross_section() const;
     /// The drum frame: gravity, rotation at 2 pi rps about the drum axis through the origin.
     Frame frame() const;
-    /// The staircase drum on cells of side diameter/cells_per_diameter (flow/bed.hpp drum_grid).
+    /// The staircase drum on cells of side diameter/cells_per_diameter (flow_run/bed.hpp drum_grid).
     Grid grid() const;
     /// Height of the flat initial surface above the drum's centre.
     double surface_height() const { return cross_section().lowest() + fill_height; }
@@ -69,7 +69,7 @@ constexpr double kDrumHistoryInterval = 0.05;
 
 /// Phi per cell of the bed at rest before the drum turns: the lithostatic balance under |g| along
 /// -z with the flat surface at the fill height, T = T, for the uniform mixture phi_hat
-/// (Phi_rcp(phi_hat), Phi_co(phi_hat); flow/bed.hpp lithostatic_bed).
+/// (Phi_rcp(phi_hat), Phi_co(phi_hat); flow_run/bed.hpp lithostatic_bed).
 std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat,
                                      double T);
 

@@ -11,8 +11,8 @@
 //
 // Run: build/bench/bench_flow [--data DIR]   (a few minutes; timings are noisy on a shared machine)
 #include "closures/closures.hpp"
-#include "flow/bed.hpp"
 #include "flow/flow_solver.hpp"
+#include "flow_run/bed.hpp"
 #include "harness/program.hpp"
 
 #include <omp.h>

@@ -8,8 +8,8 @@
 
 #include "closures/material.hpp"
 #include "core/output.hpp"
-#include "flow/flow_settings.hpp"
 #include "flow/flow_solver.hpp"
+#include "flow_fields/flow_settings.hpp"
 #include "harness/program.hpp"
 
 #include <vector>

@@ -1,7 +1,7 @@
 #include "study/fig7_core.hpp"
 
 #include "core/output.hpp"
-#include "flow/flow_settings.hpp"
+#include "flow_fields/flow_settings.hpp"
 #include "harness/check_table.hpp"
 #include "tumbler/coupled_tumbler.hpp"
 
