@@ -123,6 +123,7 @@ BOOST_AUTO_TEST_CASE(sources_read_lines_table_cells_and_data_columns) {
                               "| angle (deg) | 23.4 ± 0.02 | – | – |\n| index | 0.936 ± 0.001 | -0.014 | 0.95 |\n\nFootnote 7.\n";
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"index\" | limit", error), table, error) == 0.95);
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"angle\" | at 100 #2 *10", error), table, error) == 0.2);
+    BOOST_TEST(*source_value(*parse_source("docs/t.md \"index\" [limit]", error), table, error) == 0.95);  // inside a table row
     BOOST_TEST(!source_value(*parse_source("docs/t.md \"angle\" | limit", error), table, error).has_value());  // a dash
     BOOST_TEST(!source_value(*parse_source("docs/t.md \"Footnote\" | limit", error), table, error).has_value());  // not a row
     const std::string dat = "# cells angle\n# a comment 5\n50 23.5\n100 23.4\n\n140 23.3\n";

@@ -155,15 +155,17 @@ std::vector<ValueSpan> value_spans(const std::string& page, std::string& error) 
 }
 
 std::optional<ValueSource> parse_source(const std::string& source, std::string& error) {
-    static const Pattern text(R"re(^\s*(\S+)\s+"([^"]+)"(?:~(\d+))?\s*(?:\|\s*(.*?))?\s*(?:#(-?\d+))?\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
+    // The column after a bar, or in brackets (a span inside a table row, where a bar would split the cell).
+    static const Pattern text(
+        R"re(^\s*(\S+)\s+"([^"]+)"(?:~(\d+))?\s*(?:\|\s*(.*?)|\[([^\]]*)\])?\s*(?:#(-?\d+))?\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
     static const Pattern data(R"re(^\s*([^:\s]+):([^@\s]+)@(\S+)\s*(?:([*/])\s*([0-9.eE+-]+))?\s*$)re");
     ValueSource s;
     std::string op, factor;
     if (const auto m = text.match_of(source)) {
-        s.file = (*m)[1], s.match = (*m)[2], s.column = trimmed((*m)[4]);
+        s.file = (*m)[1], s.match = (*m)[2], s.column = trimmed(m->took_part[5] ? (*m)[5] : (*m)[4]);
         if (m->took_part[3]) s.occurrence = std::stoi((*m)[3]);
-        if (m->took_part[5]) s.number = std::stoi((*m)[5]);
-        op = (*m)[6], factor = (*m)[7];
+        if (m->took_part[6]) s.number = std::stoi((*m)[6]);
+        op = (*m)[7], factor = (*m)[8];
     } else if (const auto d = data.match_of(source)) {
         s.data = true, s.file = (*d)[1], s.column = (*d)[2], s.row = (*d)[3], op = (*d)[4], factor = (*d)[5];
     } else {

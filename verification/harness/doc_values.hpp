@@ -14,7 +14,8 @@
 //                                       "MATCH"~K takes the K-th line containing MATCH
 //   FILE "MATCH" | COLUMN [#N] [SCALE]  a markdown table: the row containing MATCH, the cell
 //                                       under the header COLUMN (else the first header containing
-//                                       it), its N-th number
+//                                       it), its N-th number; "MATCH" [COLUMN] says the same inside
+//                                       a table row, where a bar would split the cell
 //   FILE:COLUMN@ROW [SCALE]             a data file (.dat: a "# name name ..." header line, rows
 //                                       of numbers): column COLUMN of data row ROW, which is
 //                                       "last", a number from 1, or KEY=VALUE (the first row
