@@ -153,8 +153,12 @@ double FlowSolver::step(double t_end) {
 
 void FlowSolver::update_closures() {
     Stopwatch watch(timers_, FlowStage::closures);
-    cell_potential(mesh_, frame_, t_, potential_.cell);
     compute_primitives(mesh_, material_, settings_, phi_hat_, t_, state_, closures_);
+}
+
+void FlowSolver::potential_at(double t) {
+    t_forces_ = t;
+    cell_potential(mesh_, frame_, t_forces_, potential_.cell);
 }
 
 StepSize FlowSolver::explicit_step(double t_end) {
@@ -167,6 +171,7 @@ StepSize FlowSolver::explicit_convection(double t_end) {
     StepSize size{};
     {
         Stopwatch watch(timers_, FlowStage::forces);
+        potential_at(t_);  // the explicit step's dt follows from these forces: gravity at t^n
         for (int a = 0; a < 3; ++a) {
             if (!mesh_.active[a]) continue;
             face_loads(a);
@@ -180,13 +185,13 @@ StepSize FlowSolver::explicit_convection(double t_end) {
         size = time_step(mesh_, settings_, t_, t_end, rates, state_, closures_);
     }
     Stopwatch watch(timers_, FlowStage::predictor);
-    explicit_update(mesh_, settings_, frame_, source_, t_, size.dt, faces_, state_);
+    explicit_update(mesh_, settings_, frame_, source_, t_forces_, size.dt, faces_, state_);
     return size;
 }
 
 void FlowSolver::face_loads(int a) {
-    face_potential(mesh_, frame_, t_, a, potential_.cell, potential_.face[a]);
-    unsupported_loads(mesh_, settings_, frame_, t_, a, state_, closures_, potential_, loads_[a]);
+    face_potential(mesh_, frame_, t_forces_, a, potential_.cell, potential_.face[a]);
+    unsupported_loads(mesh_, settings_, frame_, t_forces_, a, state_, closures_, potential_, loads_[a]);
 }
 
 void FlowSolver::viscosity(double dt) {

@@ -14,15 +14,15 @@
 // label is the name of its timer (FlowStage, the summaries' seconds_LABEL), the same in the
 // driver (semi_implicit_step.cpp) and docs/flow_solver.md.
 // Both modes:
-//   closures: Phi_before = Phi; primitives u, T, the closures and the cell potential psi at t^n
+//   closures: Phi_before = Phi; primitives u, T and the closures at t^n
 //      (flow_fields/primitives.hpp, flow_faces/loads.hpp);
 //   ...the mode's stages...
 //   temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
 //      (3/2) div(lambda grad T) implicit in one sparse system (T relaxes towards
 //      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow_diffusion/temperature.hpp).
 // Explicit step (time_stepping = "explicit", explicit_step):
-//   forces: per active axis the face potentials and the unsupported loads (flow_faces/loads.hpp) and
-//       the HLLC face fluxes with hydrostatic reconstruction (flow_faces/convection.hpp, flow_faces/hllc.hpp);
+//   forces: gravity at t^n (dt follows from these forces); per active axis the face potentials and
+//       the unsupported loads (flow_faces/loads.hpp) and the HLLC face fluxes with hydrostatic reconstruction (flow_faces/convection.hpp, flow_faces/hllc.hpp);
 //       the effective pressure of eta, lambda, eps Phi (flow_fields/primitives.hpp);
 //   step_size: dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0
 //       and T, u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
@@ -34,9 +34,10 @@
 // Semi-implicit step (the default, semi_implicit_step; kernels in flow_faces/semi_implicit_faces.hpp):
 //   step_size: dt from the material speeds |u_n|, |U| and the outflow and compaction of the last
 //       step's fluxes, at most kStepGrowth times the last dt (flow/time_step.hpp);
-//   forces: forces at t^n: face potentials and loads, reconstructed pressures p' and face forces
+//   forces: forces of the state at t^n with gravity at t^n + dt/2 (it turns in the drum frame):
+//       face potentials and loads, reconstructed pressures p' and face forces
 //       D, the effective pressure; the state at t^n kept for a repeat;
-//   predictor: each cell's share of D and its weight at t^n, Coriolis, sources (the explicit
+//   predictor: each cell's share of D and its weight (gravity as in forces), Coriolis, sources (the explicit
 //       update without mass flux), the force part A of that change;
 //   viscosity: implicit viscosity (as in the explicit step): u*;
 //   pressure_faces: face predictor U*, donors, coupling K and explicit mass change; after the
@@ -58,19 +59,19 @@
 // Phi T, u, T; p, c, eta, lambda, eps Phi, Phi_rcp, Phi_co), psi = potential_; "faces" and "pf"
 // are faces_ and pressure_ of the active axes; other names are members.
 //   stage            reads                                   writes
-//   closures         Phi, Phi u, Phi T, phi_hat_             Phi_before_, u, T, closures_, psi (cells)
+//   closures         Phi, Phi u, Phi T, phi_hat_             Phi_before_, u, T, closures_
 //   explicit step:
-//   forces           Phi, u, T, p, c, Phi_co, psi            psi (faces), loads_, faces, eta, lambda, eps Phi
+//   forces           Phi, u, T, p, c, Phi_co                 t_forces_ = t, psi, loads_, faces, eta, lambda, eps Phi
 //   step_size        Phi, Phi_rcp, faces M and speed         dt
 //   predictor        faces, Phi                              Phi, Phi u, Phi T, u, T
 //   viscosity        Phi, u, eta                             u, Phi u (line_rhs_: split solves)
 //   semi-implicit step:
 //   step_size        Phi, u, c, Phi_co, Phi_rcp, faces M     dt
 //                    and speed (the last step's), dt_
-//   forces           Phi, u, T, p, c, Phi_co, psi; Phi u,    psi (faces), loads_, pf (p', p - p', D;
-//                    Phi T                                   reversed = 0), faces p, eta, lambda,
-//                                                            eps Phi; m_start_, u_start_, E_start_
-//   predictor        pf, Phi, u, c, u_start_                 faces (M = 0), Phi u, Phi T, u, T (Phi
+//   forces           Phi, u, T, p, c, Phi_co, dt; Phi u,     t_forces_ = t + dt/2, psi, loads_, pf (p',
+//                    Phi T                                   p - p', D; reversed = 0), faces p, eta,
+//                                                            lambda, eps Phi; m_start_, u_start_, E_start_
+//   predictor        pf, Phi, u, c, u_start_, t_forces_      faces (M = 0), Phi u, Phi T, u, T (Phi
 //                                                            with sources), force_part_
 //   viscosity        Phi, u, eta                             u, Phi u (u*; line_rhs_: split solves)
 //   pressure_faces   Phi, u, T, p, Phi_rcp, Phi_co,          pf (U*, donor, K, flux, reversed),
@@ -207,8 +208,10 @@ private:
     };
 
     // Both modes (flow_solver.cpp).
-    /// closures: primitives, closures and the cell potential at t_.
+    /// closures: primitives and closures at t_.
     void update_closures();
+    /// forces: the cell potential psi with gravity at time t (t_forces_ = t).
+    void potential_at(double t);
     /// The face potentials and unsupported loads of `axis` at t^n.
     void face_loads(int axis);
     /// viscosity: the implicit viscosity of a step dt, coupled or split as the settings say.
@@ -226,8 +229,8 @@ private:
     StepSize semi_implicit_step(double t_end);
     /// step_size: dt and its bound.
     StepSize semi_implicit_dt(double t_end);
-    /// forces: the forces at t^n and the effective pressure.
-    void forces_at_start();
+    /// forces: the forces of the state at t^n, gravity at t^n + dt/2, and the effective pressure.
+    void forces_at_start(double dt);
     /// predictor to repeat: keeps the state at t^n; predictor, viscosity, pressure correction,
     /// repeated with half the dt until the fluxes keep every bound. Returns the dt that did.
     StepSize predict_and_correct(StepSize size);
@@ -268,6 +271,7 @@ private:
     FlowSource source_;
 
     double t_ = 0.0, dt_ = 0.0;
+    double t_forces_ = 0.0;  // the time of gravity in this step's forces: t + dt/2 (semi-implicit), t (explicit)
     StepBound bound_ = StepBound::dt_max;
     long steps_ = 0;
     FlowState state_;

@@ -23,9 +23,10 @@ StepSize FlowSolver::semi_implicit_step(double t_end) {
     // step_size: dt from the material speeds and the bounds of the last step's fluxes, at most
     //     kStepGrowth times the last dt (flow/time_step.hpp).
     StepSize size = semi_implicit_dt(t_end);
-    // forces: the forces at t^n: face potentials and loads, the reconstructed pressures and face
-    //     forces D, the effective pressure of eta, lambda, eps Phi.
-    forces_at_start();
+    // forces: the forces of the state at t^n with gravity at the middle of the step: face
+    //     potentials and loads, the reconstructed pressures and face forces D, the effective
+    //     pressure of eta, lambda, eps Phi.
+    forces_at_start(size.dt);
     // predictor, viscosity, pressure_faces, pressure_solve, repeat: predict (u*), correct with the
     //     implicit pressure; while the corrected fluxes break a bound of the step, restore the
     //     state at t^n and repeat with half the dt.
@@ -46,8 +47,12 @@ StepSize FlowSolver::semi_implicit_dt(double t_end) {
     return size;
 }
 
-void FlowSolver::forces_at_start() {
+void FlowSolver::forces_at_start(double dt) {
     Stopwatch watch(timers_, FlowStage::forces);
+    // Gravity turns in the drum frame: at t + dt/2 its integral over the step is second order (at
+    // t^n the drum's surface lagged the turning gravity by dt/2). A repeat with half the dt keeps
+    // this time, so the cells' weights and the face forces stay balanced.
+    potential_at(t_ + 0.5 * dt);
     for (int a = 0; a < 3; ++a) {
         if (!mesh_.active[a]) continue;
         face_loads(a);
@@ -75,7 +80,7 @@ void FlowSolver::predictor_forces(double dt) {
     Stopwatch watch(timers_, FlowStage::predictor);
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
-    explicit_update(mesh_, settings_, frame_, source_, t_, dt, faces_, state_);
+    explicit_update(mesh_, settings_, frame_, source_, t_forces_, dt, faces_, state_);
     mesh_.for_each_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u_start_[b][c];
     });
