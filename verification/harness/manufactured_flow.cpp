@@ -158,6 +158,7 @@ ManufacturedRun ManufacturedFlow::run(const FlowSettings& s) const {
         }
     const double cells_n = static_cast<double>(n) * n;
     r.error_Phi /= cells_n, r.error_u /= cells_n, r.error_T /= cells_n;
+    r.Phi = solver.Phi(), r.u_x = solver.u(0), r.u_z = solver.u(2), r.T = solver.T();
     return r;
 }
 
