@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/output.hpp"
+#include "harness/named_table.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
 #include "harness/time_series.hpp"
@@ -28,38 +29,6 @@ namespace granseg::verify {
 namespace {
 
 constexpr const char* kScene = "verification/scenes/tumbler.toml";
-
-/// A data file's columns by name (from its first line) and rows; "nan" and "inf" read as such.
-struct NamedTable {
-    std::map<std::string, std::size_t> index;
-    std::vector<std::vector<double>> rows;
-
-    const std::vector<double>& last() const { return rows.back(); }
-    double at(const std::vector<double>& row, const std::string& column) const {
-        const auto it = index.find(column);
-        if (it == index.end() || it->second >= row.size()) throw InputError("fig7: no column " + column);
-        return row[it->second];
-    }
-};
-
-NamedTable read_named(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError("fig7: cannot read " + path);
-    NamedTable t;
-    std::string line;
-    std::getline(in, line);
-    std::istringstream names(line.substr(1));
-    for (std::string name; names >> name;) t.index.emplace(name, t.index.size());
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream row(line);
-        std::vector<double> v;
-        for (std::string token; row >> token;) v.push_back(std::strtod(token.c_str(), nullptr));
-        t.rows.push_back(v);
-    }
-    if (t.rows.empty()) throw InputError("fig7: no rows in " + path);
-    return t;
-}
 
 std::string file_text(const std::string& path) {
     std::ifstream in(path);
