@@ -60,7 +60,7 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
 
 void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state,
                                    const CellClosures& cl, const Eigen::VectorXd& step) {
-    for_each_index(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
+    parallel_for(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
         const std::size_t c = mesh.inside_cells[q];
         const long r = pattern_.unknown[c];
         const double T = state.T[c], Phi_co = cl.Phi_co[c], Phi_rcp = cl.Phi_rcp[c];
@@ -117,7 +117,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             volume_[r] = v.Phi, slope_[r] = v.slope;
             resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
         };
-        return fold_indices(mesh.parallel, mesh.inside_cells.size(), 0.0, cell, [](double a, double b) { return std::max(a, b); });
+        return parallel_fold(mesh.parallel, mesh.inside_cells.size(), 0.0, cell, [](double a, double b) { return std::max(a, b); });
     };
     double resolution = evaluate();
     // The warm start, unless it is further from the solution than no increment at all (F = -r

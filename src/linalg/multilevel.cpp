@@ -6,7 +6,6 @@
 #include <cmath>
 #include <map>
 
-#include <omp.h>
 #include <cstdlib>
 
 namespace granseg {
@@ -28,26 +27,17 @@ constexpr double kDominance = 5.0;
 /// with 1.4.
 constexpr double kOverCorrection = 1.4;
 
-/// Calls body(begin, end) on [0, m). Within a team (`team`: every thread of an enclosing parallel
-/// region calls this) each thread takes its share and waits for the others at a barrier; else
-/// split among new OpenMP threads where `parallel` and m >= kParallelRows, else once (outside an
-/// OpenMP region: a region costs about a microsecond on one thread too, and a W-cycle passes many
-/// small levels).
+/// Calls body(begin, end) on blocks of [0, m): within a team (every thread of the team calls
+/// this) each thread's share, the team waiting for all at the end (Team::share); else one block
+/// per OpenMP thread where `parallel` and m >= kParallelRows, else one block on this thread
+/// (outside an OpenMP region: a region costs about a microsecond on one thread too, and a W-cycle
+/// passes many small levels).
 template <class Body>
-void for_rows(long m, bool parallel, Body&& body, bool team = false) {
-    if (team) {
-        const long t = omp_get_thread_num(), threads = omp_get_num_threads();
-        body(m * t / threads, m * (t + 1) / threads);
-#pragma omp barrier
-    } else if (on_threads(parallel) && m >= kParallelRows) {
-#pragma omp parallel
-        {
-            const long t = omp_get_thread_num(), threads = omp_get_num_threads();
-            body(m * t / threads, m * (t + 1) / threads);
-        }
-    } else {
-        body(0L, m);
-    }
+void for_rows(long m, bool parallel, Team* team, Body&& body) {
+    if (team)
+        team->share(m, body);
+    else
+        parallel_blocks(parallel && m >= kParallelRows, m, body);
 }
 
 /// b_r - sum_k a_rk x_k: the residual of row r of a compressed row-major matrix.
@@ -178,7 +168,7 @@ Multilevel& Multilevel::take_values(const double* value) {
     return *this;
 }
 
-void Multilevel::sweep(const Level& L, bool backward, bool team) const {
+void Multilevel::sweep(const Level& L, bool backward, Team* team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     double* x = L.x.data();
@@ -186,17 +176,17 @@ void Multilevel::sweep(const Level& L, bool backward, bool team) const {
         const std::vector<long>& rows = L.colour[backward ? colours - 1 - q : q];
         // From x = 0 (the forward sweep), the first colour's neighbours are all still 0.
         const bool alone = !backward && q == 0;
-        for_rows(static_cast<long>(rows.size()), parallel_, [&, b, x](long begin, long end) {
+        for_rows(static_cast<long>(rows.size()), parallel_, team, [&, b, x](long begin, long end) {
             for (long s = begin; s < end; ++s) {
                 const long r = rows[s];
                 const double d = L.A.valuePtr()[L.diagonal[r]];
                 x[r] = alone ? b[r] / d : x[r] + row_residual(L.A, b, x, r) / d;
             }
-        }, team);
+        });
     }
 }
 
-void Multilevel::restrict_residual(const Level& L, bool swept, bool team) const {
+void Multilevel::restrict_residual(const Level& L, bool swept, Team* team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     const double* x = L.x.data();
@@ -204,12 +194,12 @@ void Multilevel::restrict_residual(const Level& L, bool swept, bool team) const 
     for (int q = 0; q < colours; ++q) {
         const std::vector<long>& rows = L.colour[q];
         const bool zero = swept && q == colours - 1;
-        for_rows(static_cast<long>(rows.size()), parallel_, [&, b, x, res](long begin, long end) {
+        for_rows(static_cast<long>(rows.size()), parallel_, team, [&, b, x, res](long begin, long end) {
             for (long s = begin; s < end; ++s) {
                 const long r = rows[s];
                 res[r] = zero || L.joins[r] == 0.0 ? 0.0 : row_residual(L.A, b, x, r);
             }
-        }, team);
+        });
     }
 }
 
@@ -220,12 +210,12 @@ void Multilevel::gather_residual(const Level& L, const Level& C) const {
     for (long r = 0; r < L.A.rows(); ++r) coarse[L.aggregate[r]] += res[r];
 }
 
-void Multilevel::correct(const Level& L, const Level& C, bool team) const {
+void Multilevel::correct(const Level& L, const Level& C, Team* team) const {
     double* x = L.x.data();
     const double* xc = C.x.data();
-    for_rows(L.A.rows(), parallel_, [&, x, xc](long begin, long end) {
+    for_rows(L.A.rows(), parallel_, team, [&, x, xc](long begin, long end) {
         for (long r = begin; r < end; ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
-    }, team);
+    });
 }
 
 void Multilevel::cycle(std::size_t l) const {
@@ -236,41 +226,39 @@ void Multilevel::cycle(std::size_t l) const {
     }
     const Level& C = level_[l + 1];
     L.x.setZero();
-    sweep(L, false, false);
+    sweep(L, false, nullptr);
     for (int visit = 0; visit < L.visits; ++visit) {
-        restrict_residual(L, visit == 0, false);
+        restrict_residual(L, visit == 0, nullptr);
         gather_residual(L, C);
         cycle(l + 1);
-        correct(L, C, false);
+        correct(L, C, nullptr);
     }
-    sweep(L, true, false);
+    sweep(L, true, nullptr);
 }
 
-void Multilevel::team_cycle(const double* b) const {
+void Multilevel::team_cycle(Team& team, const double* b) const {
     const Level& L = level_[0];
     double* x = L.x.data();
     double* fine_b = L.b.data();
-    for_rows(L.A.rows(), parallel_, [&, x, fine_b](long begin, long end) {
+    team.share(L.A.rows(), [&, x, fine_b](long begin, long end) {
         for (long r = begin; r < end; ++r) fine_b[r] = b[r], x[r] = 0.0;
-    }, true);
+    });
     if (level_.size() == 1) {
-#pragma omp single
-        L.x = coarsest_.solve(L.b);
+        team.single([&] { L.x = coarsest_.solve(L.b); });
         return;
     }
     const Level& C = level_[1];
-    sweep(L, false, true);
+    sweep(L, false, &team);
     for (int visit = 0; visit < L.visits; ++visit) {
-        restrict_residual(L, visit == 0, true);
-        // The coarse levels on one thread; the others wait at the end of the single block.
-#pragma omp single
-        {
+        restrict_residual(L, visit == 0, &team);
+        // The coarse levels on one thread while the others wait.
+        team.single([&] {
             gather_residual(L, C);
             cycle(1);
-        }
-        correct(L, C, true);
+        });
+        correct(L, C, &team);
     }
-    sweep(L, true, true);
+    sweep(L, true, &team);
 }
 
 const Multilevel::Vector& Multilevel::solve(const Vector& b) const {

@@ -5,7 +5,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -260,31 +259,19 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
     // Left-looking: supernode s takes the updates of every earlier supernode with rows in its
     // columns (the list link_[s]), then factors its panel. The two lanes' subtrees share no
     // supernode and no list: what waits for a top supernode is linked after both.
-    std::array<char, 2> ok{1, 1};
+    std::array<char, 2> ok{1, 1}, eigen_alone{1, 1};
     failed_row_ = -1;
-    bool eigen_alone = true;
-    auto run_lane = [&](int l) {
+    // Eigen's dense products open their own OpenMP team when the caller's is not active and
+    // nbThreads() > 1; a lane keeps them to its own thread (the lanes' bits must not depend on
+    // the threads), which parallel_lanes ensures unless Eigen::setNbThreads() overrides it.
+    parallel_lanes(parallel, 2, [&](int l) {
+        eigen_alone[l] = Eigen::nbThreads() == 1;
         Lane& lane = lanes_[l];
         lane.pending.clear();
         for (const auto& [begin, end] : lane.subtrees)
             for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
-    };
-    // Eigen's dense products open their own OpenMP team when the caller's is not active and
-    // nbThreads() > 1; a lane's thread keeps them to itself (the lanes' bits must not depend on
-    // the threads): one thread for each lane's thread, or for this thread while it runs both.
-    if (on_threads(parallel)) {
-#pragma omp parallel for schedule(static, 1) reduction(&& : eigen_alone)
-        for (int l = 0; l < 2; ++l) {
-            omp_set_num_threads(1);  // this lane's thread only
-            eigen_alone = eigen_alone && Eigen::nbThreads() == 1;
-            run_lane(l);
-        }
-    } else {
-        const SerialScope one_thread(true);
-        eigen_alone = Eigen::nbThreads() == 1;
-        for (int l = 0; l < 2; ++l) run_lane(l);
-    }
-    if (!eigen_alone)
+    });
+    if (!eigen_alone[0] || !eigen_alone[1])
         throw InvariantError("supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "
                              "own inside a factorisation lane");
     if (!ok[0] || !ok[1]) return false;
