@@ -28,9 +28,9 @@
 namespace granseg {
 
 /// Grids of fewer cells (all grid cells, inside or not) run on one thread: below this size a
-/// second thread buys a few per cent of wall time for nearly twice the CPU, since per step the
-/// threads meet some 200 times (fork, join, barrier) around loops of a few microseconds each (the
-/// crossover measured on the coupled drum: docs/flow_solver_choices.md, "Threads").
+/// second thread buys little wall time for nearly twice the CPU, since per step the threads meet
+/// (fork, join, barrier) around each of many loops of a few microseconds (the crossover measured
+/// on the coupled drum: docs/flow_solver_choices.md, "Threads").
 constexpr std::size_t kParallelCells = 8192;
 
 /// True if loops over a grid of `cells` cells run on the OpenMP threads.

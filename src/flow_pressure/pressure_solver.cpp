@@ -103,7 +103,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     const double tolerance = accuracy * target.lpNorm<Eigen::Infinity>() + kRoundOff;
     // F = Phi(p + dp) - Phi(p) - r + K dp and the slopes dPhi/dp at p + dp; returns the residual's
     // resolution. Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp:
-    // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
+    // where dPhi/dp is large (a bed at T_floor, with p + dp near 0)
     // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
     // Newton step can reduce (the step rounds away in dp + step).
     auto evaluate = [&] {
@@ -121,8 +121,8 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
     };
     double resolution = evaluate();
     // The warm start, unless it is further from the solution than no increment at all (F = -r
-    // there): after a sudden change of the state the last step's dp can be a poor guess (in the
-    // rolling drum it once started at |F| = 10 against |r| = 8e-3; 7 % fewer Newton steps).
+    // there): after a sudden change of the state the last step's dp can be a poor guess
+    // (docs/flow_solver_choices.md, "Warm starts").
     if (F_.lpNorm<Eigen::Infinity>() > target.lpNorm<Eigen::Infinity>() && x_.any()) {
         x_.setZero();
         resolution = evaluate();

@@ -18,13 +18,13 @@ constexpr long kCoarsestRows = 40;
 /// a loop over fewer than about 1,000 rows costs less than waking a second thread).
 constexpr long kParallelRows = 1024;
 /// A row with a_ii >= kDominance sum_{j != i} |a_ij| stays out of the coarse levels (header
-/// comment). Measured on the drum's Jacobians: 2, 5, 20 and 1e9 give the same iterations (the
-/// dust rows, which matter, have no coupling at all).
+/// comment). The factor hardly matters: the dust rows, which matter, have no coupling at all (the
+/// values tried: docs/flow_solver_choices.md, "Why these choices").
 constexpr double kDominance = 5.0;
-/// Scale of the coarse correction, below sqrt(2) (header comment). CG iterations to 1e-7 on the
-/// drum's Jacobians at 50 / 100 / 200 cells (docs/history.md, flow solver): V-cycle 9 / 12 / 17
-/// with 1.0, 11 / 13 / 14 with 1.4, 14 / 17 / 19 with 1.8; W-cycle 8 / 9 / 11 with 1.0, 8 / 9 / 10
-/// with 1.4.
+/// Scale of the coarse correction, below sqrt(2) (header comment): piecewise-constant
+/// prolongation makes the coarse corrections too small, and this factor buys back most of the
+/// iterations they cost on finer grids (measured against 1.0 and 1.8: docs/flow_solver_choices.md,
+/// "Why these choices").
 constexpr double kOverCorrection = 1.4;
 
 /// Calls body(begin, end) on blocks of [0, m): within a team (every thread of the team calls
@@ -128,9 +128,7 @@ void Multilevel::build(const Matrix& pattern, const std::vector<std::array<int, 
     // only where the over-correction keeps B positive definite (header comment): `bound` is an
     // upper bound of the eigenvalues of B A on the level below. The finest level is visited once:
     // a second visit costs a residual and two transfers over all cells, more than the
-    // iterations it saves (drum, 50 / 100 / 200 cells: 5.4 / 7.1 / 9.0 iterations per Newton
-    // step against 5.8 / 8.1 / 10.9, but 1.2-1.3 times the time per step; all levels once:
-    // 7.1 / 10.0 / 13.1 iterations, 1.0-1.1 times the time).
+    // iterations it saves (measured on the drum: docs/flow_solver_choices.md, "Why these choices").
     double bound = 1.0;
     for (std::size_t l = level_.size() - 1; l-- > 0;) {
         Level& L = level_[l];
