@@ -10,6 +10,9 @@
 
 namespace granseg {
 
+// Longer than most functions, for a reason: the face kernel is a lambda over the raw pointers set
+// up here, inlined into the loops of both face layouts below (x faces inside rows, y and z faces
+// between rows); split, those pointers would travel as a dozen parameters.
 void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl,
                       const Potential& potential, const AxisLoads& loads, AxisFaces& out) {
     const Grid& grid = mesh.grid;

@@ -58,6 +58,9 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
     });
 }
 
+// Longer than most functions, for a reason: the cell kernel is a lambda over the raw pointers and
+// the sweep direction set up here, inlined into the loops of both layouts below (along x inside
+// rows, along y and z across rows in blocks of columns).
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
                        const FlowState& state, const CellClosures& closures, const Potential& potential,
                        AxisLoads& loads) {

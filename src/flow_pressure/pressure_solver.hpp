@@ -85,9 +85,20 @@ private:
     /// stiff branch (Phi > Phi_co) below the kink (header comment).
     void newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
                        const Eigen::VectorXd& step);
+    /// The Jacobian's coupling part from the faces' K, and per row Phi(p) (base_), r (target_) and
+    /// the guess dp (x_).
+    void assemble(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                  const PressureFaces& faces, const std::vector<double>& change, const std::vector<double>& dp);
+    /// F = Phi(p + dp) - Phi(p) - r + K dp, and Phi(p + dp) and dPhi/dp per row; returns how finely
+    /// F can resolve dp (below which no Newton step can reduce it).
+    double residual(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl);
+    /// The Newton step step_ = -J^-1 F, by conjugate gradients to what the Newton tolerance
+    /// needs; returns its iterations, counted as Eigen's CG counts them plus one.
+    int newton_step(const FlowMesh& mesh, double tolerance);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow_fields/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, volume_, slope_, F_, step_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F, Newton step
+    Eigen::VectorXd base_, target_;                  // per row: Phi(p) at the start of the solve, r
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 
