@@ -173,8 +173,7 @@ $(BUILD)/figures.mk: $(FIG_GP) $(BENCH_GP) $(FULL_GP) tools/figure_deps.sh
 	@tools/figure_deps.sh $(BUILD) $(RUNS) $(FIG_GP) $(BENCH_GP) $(FULL_GP) > $@
 -include $(BUILD)/figures.mk
 
-# One figure: gnuplot writes a temporary file that is renamed on success; a failed render leaves
-# no PNG, which the verify summary counts as a failure.
+# One figure, renamed into place only if gnuplot succeeds: the verify summary counts a missing PNG.
 GNUPLOT_DIRS = datadir='$(BUILD)/data'; benchdir='$(BUILD)/bench-data'; rundir='$(RUNS)'
 $(BUILD)/figures/%.png: figures/%.gp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
@@ -198,9 +197,8 @@ $(RUNS)/%.seconds: verification/scenes/%.toml $(CLI)
 	$(CLI) run $< --output-dir $(RUNS)/$* > $(RUNS)/$*.log || { cat $(RUNS)/$*.log; exit 1; }; \
 	t1=$$(date +%s.%N); awk "BEGIN{printf \"%.0f\n\", $$t1 - $$t0}" > $@
 
-# make fig7: the paper's coupled drum (verification/scenes/tumbler.toml, 100 cells per diameter,
-# 25 s, default time stepping) run once, then Fig. 7a-d and the animation from it
-# (figures/full_fig7*.gp); figures-full reuses the run. Prints the run's and the command's wall time.
+# make fig7: the paper's drum (verification/scenes/tumbler.toml) run once, Fig. 7 and its animation
+# drawn; its numbers printed and, with its cost, tabled for README.md (verification/fig7_tables.awk).
 FIG7_PNG := $(filter $(BUILD)/figures/full_fig7%,$(FULL_PNG))
 fig7: deps
 	@start=$$(date +%s); \
@@ -208,6 +206,8 @@ fig7: deps
 	for png in $(FIG7_PNG); do [ -s $$png ] || { echo "fig7: $$png was not rendered"; exit 1; }; done; \
 	if [ $$(stat -c %Y $(RUNS)/tumbler.seconds) -ge $$start ]; then how="this run"; else how="an earlier run, reused"; fi; \
 	echo "fig7: Fig. 7a-d and the animation in $(BUILD)/figures/full_fig7*_tumbler.png (+ .gif) from $(RUNS)/tumbler"; \
+	awk -v cost=$(RUNS)/fig7_cost.md -f verification/fig7_tables.awk $(RUNS)/tumbler/summary.dat > $(RUNS)/fig7_run.md; \
+	sed -n 's/^| \(.*\) | \(.*\) |$$/fig7: \1: \2/p' $(RUNS)/fig7_run.md | tail -n +2; \
 	echo "fig7: the drum run took $$(cat $(RUNS)/tumbler.seconds) s wall ($$how); make fig7 took $$(( $$(date +%s) - start )) s"
 
 # ---- benchmarks and long studies (not part of verify) ------------------------------------------

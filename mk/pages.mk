@@ -24,7 +24,8 @@ DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig
 # The Fig. 7 study's figures come from a benchmark, Fig. 7c/7d at 100 cells from make fig7's run:
 # drawn when their data is there (make bench BENCH=bench_fig7_convergence, make fig7), else left as
 # they are.
-DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work full_fig7c_tumbler full_fig7d_tumbler bench_drum_shapes
+DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work full_fig7c_tumbler full_fig7d_tumbler full_fig7cd_tumbler \
+                     bench_drum_shapes
 
 docs-figures:
 	@$(MAKE) --no-print-directory -j$(JOBS) $(LIB) $(CLI) $(VERIFY_BIN)

@@ -9,7 +9,7 @@
 //               r = 0 from a guess of 0 takes no Newton step and keeps dp = 0 exactly; a balanced
 //               bed, whose r is the rounding where gravity and the pressure gradient cancel, takes
 //               one and moves by round-off (how far at the defaults: verify_flow_rest and
-//               docs/flow_solver.md, pressure_solve); max |F| stops at `accuracy` max |r|
+//               docs/flow_solver_pressure.md); max |F| stops at `accuracy` max |r|
 //               over the whole domain, so two runs that differ by rounding (the slab of
 //               verify_flow_rotation and its 2-D run) differ by what that tolerance admits
 //

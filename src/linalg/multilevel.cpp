@@ -19,12 +19,12 @@ constexpr long kCoarsestRows = 40;
 constexpr long kParallelRows = 1024;
 /// A row with a_ii >= kDominance sum_{j != i} |a_ij| stays out of the coarse levels (header
 /// comment). The factor hardly matters: the dust rows, which matter, have no coupling at all (the
-/// values tried: docs/flow_solver_choices.md, "Why these choices").
+/// values tried: docs/history.md, "Constants of the flow step").
 constexpr double kDominance = 5.0;
 /// Scale of the coarse correction, below sqrt(2) (header comment): piecewise-constant
 /// prolongation makes the coarse corrections too small, and this factor buys back most of the
-/// iterations they cost on finer grids (measured against 1.0 and 1.8: docs/flow_solver_choices.md,
-/// "Why these choices").
+/// iterations they cost on finer grids (measured against 1.0 and 1.8: docs/history.md, "Constants
+/// of the flow step").
 constexpr double kOverCorrection = 1.4;
 
 /// Calls body(begin, end) on blocks of [0, m): within a team (every thread of the team calls
@@ -128,7 +128,7 @@ void Multilevel::build(const Matrix& pattern, const std::vector<std::array<int, 
     // only where the over-correction keeps B positive definite (header comment): `bound` is an
     // upper bound of the eigenvalues of B A on the level below. The finest level is visited once:
     // a second visit costs a residual and two transfers over all cells, more than the
-    // iterations it saves (measured on the drum: docs/flow_solver_choices.md, "Why these choices").
+    // iterations it saves (measured on the drum: docs/history.md, "Constants of the flow step").
     double bound = 1.0;
     for (std::size_t l = level_.size() - 1; l-- > 0;) {
         Level& L = level_[l];

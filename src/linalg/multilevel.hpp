@@ -25,7 +25,7 @@
 //   0) stay out of the coarse levels (their row of P is 0), as in Notay's aggregation AMG (ETNA
 //   37, 2010): the smoother solves them, and in an aggregate with a bed cell their huge a_ii
 //   would pin the coarse value and cut the bed's coarse correction at its surface (its cost in
-//   iterations: docs/flow_solver_choices.md). Which rows join follows the values, per matrix.
+//   iterations: docs/history.md). Which rows join follows the values, per matrix.
 // * Cycle: one multicolour Gauss-Seidel sweep before the coarse correction (colours in order)
 //   and its adjoint after it (colours in reverse order), a direct solve (dense LDL^T) on the
 //   coarsest level (at most kCoarsestRows rows): the preconditioner B is a fixed symmetric

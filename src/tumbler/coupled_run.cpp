@@ -49,7 +49,7 @@ struct CoupledMeasures {
 class CoupledRecord {
 public:
     CoupledRecord(CoupledTumbler& tumbler, const CoupledRunOptions& options);
-    /// Brings the segregation up to date and records what is due at the tumbler's time.
+    /// Records what is due at the tumbler's time.
     void sample();
     /// Moves the material points (if any) with the flow's velocities over the step dt.
     void carry_points(double dt);
@@ -132,7 +132,6 @@ bool CoupledRecord::due(double next) const {
 void CoupledRecord::sample() {
     const bool vtk = options_.run.vtk && due(next_snapshot_);
     if (!due(next_history_) && !vtk && !due(next_frame_)) return;
-    tumbler_.synchronise();
     if (due(next_history_)) record_history();
     if (vtk) {
         next_snapshot_ += options_.run.snapshot_every;
