@@ -43,7 +43,7 @@ Sums helper_sums(const FlowMesh& mesh, const std::array<std::vector<double>, 3>&
     const AxisFields f = {F[0].data(), F[1].data(), F[2].data()};
     const std::size_t cells = mesh.grid.cells();
     Sums s{std::vector<double>(cells), std::vector<double>(cells), std::vector<double>(cells)};
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* rows) {
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* rows) {
         s.balance[c] = face_balance(f, w, i, rows);
         s.outflow[c] = face_outflow(f, w, i, rows);
         s.after[c] = mass_balance(1.0, 0.01, f, axis_weights(mesh), i, rows);
@@ -124,7 +124,7 @@ BOOST_AUTO_TEST_CASE(transport_update_is_the_coupling_identity_and_conserves_mas
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const AxisWeights inv_h = axis_weights(mesh);
     std::vector<double> expected(cells);
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* rows) {
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* rows) {
         expected[c] = start.Phi[c] - dt * face_balance(M, inv_h, i, rows);
     });
     double total_before = 0.0, total_after = 0.0;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <tuple>
 #include <vector>
 
@@ -94,12 +95,12 @@ BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_
     // not even a one-thread team), and a reduction (largest value, count) over the indices.
     auto run = [](bool parallel) {
         std::vector<int> thread(1000, -1), level(1000, -1);
-        for_each_index(parallel, thread.size(), [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
+        parallel_for(parallel, thread.size(), [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
         struct Fold {
             double largest = 0.0;
             long count = 0;
         };
-        const Fold f = fold_indices(parallel, 1000L, Fold{}, [](Fold& acc, long i) {
+        const Fold f = parallel_fold(parallel, 1000L, Fold{}, [](Fold& acc, long i) {
             acc.largest = std::max(acc.largest, static_cast<double>((i * 7919) % 1000));
             acc.count += i % 3 == 0;
         }, [](const Fold& x, const Fold& y) { return Fold{std::max(x.largest, y.largest), x.count + y.count}; });
@@ -117,6 +118,52 @@ BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_
     BOOST_TEST((threads_one == 0 && level_one == 0));  // one thread: no region either
     BOOST_TEST((largest_on == largest_off && largest_off == largest_one && largest_one == 999.0));
     BOOST_TEST((count_on == count_off && count_off == count_one && count_one == 334));
+}
+
+BOOST_AUTO_TEST_CASE(a_team_shares_its_loops_and_sums_to_the_same_bits_on_any_number_of_threads) {
+    const int before = omp_get_max_threads();
+    const long n = 5000;  // about ten blocks of a dot product
+    std::vector<double> a(n), b(n);
+    for (long i = 0; i < n; ++i) a[i] = 1.0 / (1.0 + i), b[i] = std::sin(0.37 * i);
+    // Three dot products in a row on every thread (the partial sums are reused in turn), and a
+    // shared loop whose rows must all be written before any thread reads them.
+    auto run = [&](int threads) {
+        omp_set_num_threads(threads);
+        std::vector<std::array<double, 3>> seen(threads);
+        std::vector<double> twice(n, 0.0);
+        long wrong = 0;
+        run_as_team(true, n, [&](Team& team) {
+            std::array<double, 3>& mine = seen[omp_get_thread_num()];
+            mine = {team.dot(a.data(), b.data(), n), team.dot(b.data(), b.data(), n), team.dot(a.data(), a.data(), n)};
+            team.share(n, [&](long begin, long end) {
+                for (long i = begin; i < end; ++i) twice[i] = 2.0 * a[i];
+            });
+            long bad = 0;
+            for (long i = 0; i < n; ++i) bad += twice[i] != 2.0 * a[i];
+            team.single([&] { wrong = bad; });
+        });
+        for (const auto& s : seen) BOOST_TEST((s == seen[0]));  // every thread got the same sums
+        BOOST_TEST(wrong == 0);
+        return seen[0];
+    };
+    const auto one = run(1), two = run(2), three = run(3);
+    omp_set_num_threads(before);
+    BOOST_TEST((one == two && two == three));
+}
+
+BOOST_AUTO_TEST_CASE(lanes_run_once_each_on_threads_that_open_no_more) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(2);
+    std::array<int, 2> runs{0, 0}, threads{0, 0}, team{0, 0};
+    parallel_lanes(true, 2, [&](int l) {
+        ++runs[l];
+        threads[l] = omp_get_thread_num();
+        team[l] = largest_team([](auto region) { region(); });
+    });
+    omp_set_num_threads(before);
+    BOOST_TEST((runs[0] == 1 && runs[1] == 1));
+    BOOST_TEST(threads[0] != threads[1]);         // side by side
+    BOOST_TEST((team[0] == 1 && team[1] == 1));   // a region inside a lane gets one thread
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -18,9 +18,8 @@
 // cancelling: p of the finest pair at least kOrderMin for u and T (first order in time: the step
 // is Lie split and its predictor, pressure and transport are backward or forward Euler; the next
 // terms weigh dt/tau against the first, tau the solution's period, below 0.1 on these steps).
-// Phi's differences are reported, not checked: their ratios wander (p from 0.56 to 1.15 over dt
-// from 1.6 ms to 25 us, with the pressure solved to 1e-8 and with donor-cell transport alike), a
-// part of Phi's time error that is not yet understood (docs/history.md).
+// Phi's differences are reported, not checked: their ratios wander whatever the pressure
+// tolerance and the transport, a part of Phi's time error not yet understood (docs/history.md).
 // Writes flow_order_time.dat.
 //
 // Run: build/verification/verify_flow_order [--data DIR]   (about half a minute)
@@ -76,13 +75,13 @@ void check_time_order(CheckTable& table, const verify::ProgramOptions& options, 
         s.dt_max = dt;
         runs.push_back(flow.run(s));
     }
-    DataTable data({"dt", "difference_Phi", "difference_u", "difference_T"});
+    DataTable data;
     data.comment("verify_flow_order: semi-implicit, " + std::to_string(kTimeGrid) + " x " + std::to_string(kTimeGrid) +
                  " cells; mean |f(dt) - f(dt/2)| per cell at t_end");
     std::vector<std::array<double, 3>> d;
     for (std::size_t i = 0; i + 1 < runs.size(); ++i) {
         d.push_back(field_difference(runs[i], runs[i + 1]));
-        data.row({kTimeSteps[i], d.back()[0], d.back()[1], d.back()[2]});
+        data.row({{"dt", kTimeSteps[i]}, {"difference_Phi", d.back()[0]}, {"difference_u", d.back()[1]}, {"difference_T", d.back()[2]}});
     }
     const char* names[3] = {"Phi", "u", "T"};
     for (std::size_t i = 1; i < d.size(); ++i) {
@@ -101,7 +100,7 @@ void check_time_order(CheckTable& table, const verify::ProgramOptions& options, 
 /// sources on the grid of kSizes[i] (the same for both modes).
 void check_mode(CheckTable& table, const verify::ProgramOptions& options, TimeStepping mode,
                 const std::vector<verify::ManufacturedFlow>& flows) {
-    DataTable data({"n", "h", "error_Phi", "error_u", "error_T"});
+    DataTable data;
     std::vector<verify::ManufacturedRun> errors;
     for (std::size_t g = 0; g < flows.size(); ++g) {
         const int n = kSizes[g];
@@ -116,7 +115,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, TimeSt
             return;
         }
         const verify::ManufacturedRun& e = errors.back();
-        data.row({static_cast<double>(n), verify::kManufacturedSide / n, e.error_Phi, e.error_u, e.error_T});
+        data.row({{"n", static_cast<double>(n)}, {"h", verify::kManufacturedSide / n}, {"error_Phi", e.error_Phi},
+                   {"error_u", e.error_u}, {"error_T", e.error_T}});
         table.note(verify::mode_tag(mode) + "n = " + std::to_string(n) + ": mean |error| Phi " + verify::format(e.error_Phi) + ", |u| " +
                    verify::format(e.error_u) + " m/s, T " + verify::format(e.error_T) + " m^2/s^2");
     }

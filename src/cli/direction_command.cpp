@@ -49,6 +49,29 @@ std::string vector_text(const Eigen::Vector3d& v) {
     return number_text(v(0)) + " " + number_text(v(1)) + " " + number_text(v(2));
 }
 
+/// The direction's answer, one "name = value" line each: status, d_s, P, the shear rates and
+/// eigenvalues, k_max, k_min, d_plus, d_minus and their |d . u|, T and S^sl.
+void print_direction(const SegregationDirection& r, const Eigen::Vector3d& u, double T, const Eigen::Vector3d& S_sl) {
+    std::cout << "status = " << to_string(r.status) << '\n'
+              << "d_s = " << vector_text(r.d_s) << '\n';
+    const Eigen::Matrix3d P = r.P();
+    std::cout << "P = " << vector_text(P.row(0).transpose()) << ' ' << vector_text(P.row(1).transpose()) << ' ' << vector_text(P.row(2).transpose()) << '\n';
+    const std::pair<const char*, double> scalars[] = {
+        {"gamma_dot", r.gamma_dot}, {"principal_shear", r.principal_shear},
+        {"kappa_min", r.eigen.kappa_min}, {"kappa_mid", r.eigen.kappa_mid}, {"kappa_max", r.eigen.kappa_max},
+        {"relative_gap", r.eigen.relative_gap},
+    };
+    for (const auto& [name, value] : scalars) std::cout << name << " = " << number_text(value) << '\n';
+    std::cout << "k_max = " << vector_text(sign_normalised(r.eigen.k_max)) << '\n'
+              << "k_min = " << vector_text(sign_normalised(r.eigen.k_min)) << '\n'
+              << "d_plus = " << vector_text(r.d_plus) << '\n'
+              << "d_minus = " << vector_text(r.d_minus) << '\n'
+              << "abs_d_plus_dot_u = " << number_text(std::fabs(r.d_plus.dot(u))) << '\n'
+              << "abs_d_minus_dot_u = " << number_text(std::fabs(r.d_minus.dot(u))) << '\n'
+              << "T = " << number_text(T) << '\n'
+              << "S_sl = " << vector_text(S_sl) << '\n';
+}
+
 }  // namespace
 
 int direction_main(const std::vector<std::string>& args) {
@@ -94,24 +117,7 @@ int direction_main(const std::vector<std::string>& args) {
     const SegregationDirection r = segregation_direction(grad, u, options);
     if (!vm.count("T")) T = steady_shear_temperature(Material::glass_substitute(), r.gamma_dot);  // eq. (45)
 
-    std::cout << "status = " << to_string(r.status) << '\n'
-              << "d_s = " << vector_text(r.d_s) << '\n';
-    const Eigen::Matrix3d P = r.P();
-    std::cout << "P = " << vector_text(P.row(0).transpose()) << ' ' << vector_text(P.row(1).transpose()) << ' ' << vector_text(P.row(2).transpose()) << '\n';
-    const std::pair<const char*, double> scalars[] = {
-        {"gamma_dot", r.gamma_dot}, {"principal_shear", r.principal_shear},
-        {"kappa_min", r.eigen.kappa_min}, {"kappa_mid", r.eigen.kappa_mid}, {"kappa_max", r.eigen.kappa_max},
-        {"relative_gap", r.eigen.relative_gap},
-    };
-    for (const auto& [name, value] : scalars) std::cout << name << " = " << number_text(value) << '\n';
-    std::cout << "k_max = " << vector_text(sign_normalised(r.eigen.k_max)) << '\n'
-              << "k_min = " << vector_text(sign_normalised(r.eigen.k_min)) << '\n'
-              << "d_plus = " << vector_text(r.d_plus) << '\n'
-              << "d_minus = " << vector_text(r.d_minus) << '\n'
-              << "abs_d_plus_dot_u = " << number_text(std::fabs(r.d_plus.dot(u))) << '\n'
-              << "abs_d_minus_dot_u = " << number_text(std::fabs(r.d_minus.dot(u))) << '\n'
-              << "T = " << number_text(T) << '\n'
-              << "S_sl = " << vector_text(segregation_velocity(S0, T, r.d_s, g)) << '\n';
+    print_direction(r, u, T, segregation_velocity(S0, T, r.d_s, g));
     return 0;
 }
 

@@ -233,7 +233,7 @@ void FlowSolver::check_invariants() const {
         return Phi[c] >= 0.0 && Phi[c] < rcp[c] && std::isfinite(Phi[c]) && T[c] >= 0.0 && std::isfinite(T[c]) &&
                std::isfinite(u[0][c]) && std::isfinite(u[1][c]) && std::isfinite(u[2][c]);
     };
-    const long bad = fold_indices(
+    const long bad = parallel_fold(
         mesh_.parallel, mesh_.inside_cells.size(), 0L, [&](long& count, std::size_t q) { count += ok(mesh_.inside_cells[q]) ? 0 : 1; },
         std::plus<long>());
     if (bad == 0) return;

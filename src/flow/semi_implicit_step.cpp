@@ -81,7 +81,7 @@ void FlowSolver::predictor_forces(double dt) {
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
     explicit_update(mesh_, settings_, frame_, source_, t_forces_, dt, faces_, state_);
-    mesh_.for_each_inside([&](std::size_t c) {
+    mesh_.parallel_for_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u_start_[b][c];
     });
 }
@@ -149,7 +149,7 @@ StepSize FlowSolver::restart_with_half_dt(StepSize size) {
     ++counters_.repeated;
     size = {0.5 * size.dt, StepBound::halved};
     state_.Phi = Phi_before_, state_.m = m_start_, state_.u = u_start_, state_.E = E_start_;
-    mesh_.for_each_inside([&](std::size_t c) { dp_[c] = 0.0; });
+    mesh_.parallel_for_inside([&](std::size_t c) { dp_[c] = 0.0; });
     for (AxisPressureFaces& P : pressure_) std::fill(P.reversed.begin(), P.reversed.end(), 0);
     if (!(size.dt >= settings_.dt_min))
         throw InvariantError("flow: the semi-implicit step fell below dt_min = " + format_number(settings_.dt_min) +
@@ -169,12 +169,12 @@ void FlowSolver::transport(double dt) {
 void FlowSolver::diffuse_increments(double dt) {
     Stopwatch watch(timers_, FlowStage::increments);
     const double Phi_vac = settings_.Phi_vacuum;
-    mesh_.for_each_inside([&](std::size_t c) {
+    mesh_.parallel_for_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) velocity_change_[b][c] = state_.u[b][c] - u_star_[b][c];
     });
     diffuse_change(dt, velocity_change_);
     // A cell empty at t^n (its row was the identity) or at the end keeps the update's velocity.
-    mesh_.for_each_inside([&](std::size_t c) {
+    mesh_.parallel_for_inside([&](std::size_t c) {
         if (!(Phi_before_[c] > Phi_vac && state_.Phi[c] > Phi_vac)) return;
         for (int b = 0; b < 3; ++b) {
             state_.u[b][c] = u_star_[b][c] + velocity_change_[b][c];
@@ -188,7 +188,7 @@ void FlowSolver::diffuse_change(double dt, std::array<std::vector<double>, 3>& d
     for (int b = 0; b < 3; ++b) increment_.u[b] = du[b];
     increment_.Phi = Phi_before_;
     implicit_viscosity(mesh_, settings_, WallVelocities{}, dt, closures_.eta, lines_, line_rhs_, increment_);
-    mesh_.for_each_inside([&](std::size_t c) {
+    mesh_.parallel_for_inside([&](std::size_t c) {
         if (Phi_before_[c] > settings_.Phi_vacuum)
             for (int b = 0; b < 3; ++b) du[b][c] = increment_.u[b][c];
     });

@@ -36,7 +36,7 @@ StepRates largest_rates(const FlowMesh& mesh, const FlowState& state, const Cell
             if (div < 0.0) rates.compaction = std::max(rates.compaction, -div / (rcp[c] - Phi[c]));
         }
     };
-    return fold_indices(mesh.parallel, mesh.rows, StepRates{0.0, 0.0, 0.0}, row, [](const StepRates& x, const StepRates& y) {
+    return parallel_fold(mesh.parallel, mesh.rows, StepRates{0.0, 0.0, 0.0}, row, [](const StepRates& x, const StepRates& y) {
         return StepRates{std::max(x.waves, y.waves), std::max(x.outflow, y.outflow), std::max(x.compaction, y.compaction)};
     });
 }
@@ -120,7 +120,7 @@ bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<doubl
             bad += ok ? 0 : 1;
         }
     };
-    return fold_indices(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) == 0;
+    return parallel_fold(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) == 0;
 }
 
 }  // namespace granseg

@@ -14,8 +14,8 @@
 // which do not depend on dt. Semi-implicit step: the waves are the material speeds |u_n| of the
 // cells and |U| of the last step's faces (and |u_n| + c in the first step, after which dt grows by
 // at most kStepGrowth per step), the outflow rate is the last step's (halved margin) and so is the
-// compaction rate (no margin: the check below catches the steps where it grew; without it a drum at
-// 2 rps halved 80 % of its steps, with it 1 %, in 0.63 of the time; a margin of 2 took twice the steps),
+// compaction rate (no margin: the check below catches the steps where it grew, and a margin costs
+// more steps than those repeats: docs/flow_solver_choices.md, "Why these choices"),
 // and the outflow and compaction bounds are checked after the pressure solve, since the fluxes of
 // the step depend on dt (step_within_bounds(); the step is repeated with half the dt if a bound
 // is broken).

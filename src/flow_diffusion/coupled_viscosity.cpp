@@ -99,7 +99,7 @@ Eigen::MatrixXd CoupledViscosity::solve_columns(bool parallel) const {
     for (Eigen::Index b = 0; b < rhs_.cols(); ++b)
         if (!rhs_.col(b).isZero(0.0)) columns.push_back(b);
     // The columns' solves are independent: one per thread.
-    for_each_index(parallel && columns.size() > 1, columns.size(), [&](std::size_t q) {
+    parallel_for(parallel && columns.size() > 1, columns.size(), [&](std::size_t q) {
         if (factorisation_ == Factorisation::simplicial) {
             x.col(columns[q]) = simplicial_.solve(rhs_.col(columns[q]));
             return;

@@ -15,8 +15,8 @@
 // step (Lie/ADI) multiplies the responses of the axes: a mode with viscous rates a = dt eta k_x^2/Phi
 // and b = dt eta k_z^2/Phi is damped by (1 + a)(1 + b) instead of 1 + a + b, so for a, b >> 1 the
 // slow creep of a bed under a load that varies in x and z comes out min(a, b) times too slow,
-// and more so the longer the step (measured: the semi-implicit drum at dt = 1 ms turned past
-// 90 deg before it avalanched; coupled, it avalanches near the friction angle).
+// and more so the longer the step: at the semi-implicit step's dt the drum's bed stays rigid far
+// past the friction angle (docs/flow_solver_choices.md, "Why these choices").
 // One sparse symmetric positive definite matrix for the three components: its pattern (inside
 // cells, interior faces) and fill-reducing ordering are set up once, the values and the sparse
 // LDL^T factor each step: the project's supernodal one (linalg/supernodal_ldlt.hpp) or Eigen's

@@ -15,7 +15,7 @@ void DiffusionLines::factor(const FlowMesh& mesh, int a, double r, const std::ve
     const double *Phi = Phi_in.data(), *k = kappa.data();
     const unsigned char *in = mesh.inside.data(), *kind = mesh.face_kind[a].data();
     double *lower = lower_.data(), *diag = diag_.data(), *upper = upper_.data();
-    mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+    mesh.parallel_for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
         const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
         const bool active = in[c] && Phi[c] > Phi_vac;
         const bool in_lo = kind[fl] == kInterior, in_hi = kind[fu] == kInterior;

@@ -28,14 +28,14 @@ void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const Ce
     const double* eta = cl.eta.data();
     const unsigned char* in = mesh.inside.data();
     const auto& u = state.u;
-    for_each_index(mesh.parallel, mesh.rows, [&](std::size_t row) {
+    parallel_for(mesh.parallel, mesh.rows, [&](std::size_t row) {
         for (int i = mesh.row_lo[row]; i < mesh.row_hi[row]; ++i) heat[nx * row + i] = 0.0;
     });
     for (int a = 0; a < 3; ++a) {
         if (!mesh.active[a]) continue;
         const double inv_h2 = 1.0 / (mesh.grid.h[a] * mesh.grid.h[a]);
         const unsigned char* kind = mesh.face_kind[a].data();
-        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t row) {
+        parallel_for(mesh.parallel, mesh.rows, [&](std::size_t row) {
             const AxisRow ar = mesh.axis_row(a, row);
             for (int i = mesh.row_lo[row]; i < mesh.row_hi[row]; ++i) {
                 const std::size_t c = nx * row + i, fl = ar.face0 + i, fu = fl + ar.face_step;

@@ -18,7 +18,7 @@ void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, cons
             const unsigned char *in = mesh.inside.data(), *kind = mesh.face_kind[a].data();
             const Grid* grid = &mesh.grid;
             double* rhs = work.data();
-            mesh.for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
+            mesh.parallel_for_row_cells(a, [=](std::size_t c, int i, const AxisRow& ar) {
                 const std::size_t fl = ar.face0 + i, fu = fl + ar.face_step;
                 double value = Phi[c] * u[c];
                 if (kind[fl] == kWallBelow && on_domain_boundary(*grid, a, fl)) value += U_lo * eta[c];
@@ -29,7 +29,7 @@ void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, cons
             state.u[b].swap(work);
         }
     }
-    mesh.for_each_inside([&](std::size_t c) {
+    mesh.parallel_for_inside([&](std::size_t c) {
         for (int b = 0; b < 3; ++b) state.m[b][c] = state.Phi[c] * state.u[b][c];
     });
 }

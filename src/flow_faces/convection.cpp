@@ -10,6 +10,9 @@
 
 namespace granseg {
 
+// Longer than most functions, for a reason: the face kernel is a lambda over the raw pointers set
+// up here, inlined into the loops of both face layouts below (x faces inside rows, y and z faces
+// between rows); split, those pointers would travel as a dozen parameters.
 void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl,
                       const Potential& potential, const AxisLoads& loads, AxisFaces& out) {
     const Grid& grid = mesh.grid;
@@ -51,7 +54,7 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
     };
 
     if (a == 0) {  // faces inside each row, from the first inside cell's lower face to the last one's upper face
-        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
+        parallel_for(mesh.parallel, mesh.rows, [&](std::size_t r) {
             if (mesh.row_lo[r] >= mesh.row_hi[r]) return;  // no inside cell in this row
             const std::size_t base = nx * r, f0 = (nx + 1) * r, last = nx - 1;
             // The faces on the domain boundary (i = 0, nx) join the first and the last cell of the
@@ -66,7 +69,7 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
     // Axes y and z: the layer of faces between rows; a face row joins cell rows (j, k) and its
     // lower neighbour along the axis.
     const std::size_t layers = n_a + 1, others = a == 1 ? grid.n[2] : ny;
-    for_each_pair(mesh.parallel, layers, others, [&](std::size_t l, std::size_t o) {
+    parallel_for_pairs(mesh.parallel, layers, others, [&](std::size_t l, std::size_t o) {
             const std::size_t j_hi = a == 1 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
             const std::size_t k_hi = a == 2 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
             const std::size_t j_lo = a == 1 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
@@ -98,7 +101,7 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
     double* m[3] = {state.m[0].data(), state.m[1].data(), state.m[2].data()};
     double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
     const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
         const double dE = face_balance(Ef, inv_h, i, ar);
         double dm[3];
         for (int b = 0; b < 3; ++b) dm[b] = face_balance(mom_upper[b], mom_lower[b], inv_h, i, ar);
@@ -145,7 +148,7 @@ void apply_mass_fluxes(const FlowMesh& mesh, const FaceFields& M, double dt, std
     }
     if (Phi.size() != grid.cells()) throw InputError("apply_mass_fluxes: Phi needs one value per cell");
     double* out = Phi.data();
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { out[c] = mass_balance(out[c], dt, fields, inv_h, i, ar); });
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { out[c] = mass_balance(out[c], dt, fields, inv_h, i, ar); });
 }
 
 }  // namespace granseg

@@ -18,7 +18,7 @@ void cell_potential(const FlowMesh& mesh, const Frame& frame, double t, std::vec
     const std::size_t cells = grid.cells();
     const double *X = mesh.position[0].data(), *Y = mesh.position[1].data(), *Z = mesh.position[2].data();
     double* psi = psi_out.data();
-    for_each_index(mesh.parallel, cells, [&](std::size_t c) {
+    parallel_for(mesh.parallel, cells, [&](std::size_t c) {
         const double rx = X[c] - x_c, rz = Z[c] - z_c;
         psi[c] = -(g_pot[0] * X[c] + g_pot[1] * Y[c] + g_pot[2] * Z[c]) - 0.5 * w2 * (rx * rx + rz * rz);
     });
@@ -45,7 +45,7 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
     const double* psi = psi_cell.data();
     const unsigned char* kind = mesh.face_kind[a].data();
     // Each cell writes its upper face; the cells of the first layer also write their lower face.
-    for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
+    parallel_for(mesh.parallel, mesh.rows, [&](std::size_t r) {
         const AxisRow ar = mesh.axis_row(a, r);
         const bool first_layer = a == 0 || (a == 1 ? r % grid.n[1] == 0 : r < static_cast<std::size_t>(grid.n[1]));
         for (int i = 0; i < static_cast<int>(nx); ++i) {
@@ -58,6 +58,9 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
     });
 }
 
+// Longer than most functions, for a reason: the cell kernel is a lambda over the raw pointers and
+// the sweep direction set up here, inlined into the loops of both layouts below (along x inside
+// rows, along y and z across rows in blocks of columns).
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
                        const FlowState& state, const CellClosures& closures, const Potential& potential,
                        AxisLoads& loads) {
@@ -111,7 +114,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
         downhill[c] = filled ? p[c] + Phi[c] * fall + load[c] : 0.0;
     };
     if (a == 0) {
-        for_each_index(mesh.parallel, mesh.rows, [&](std::size_t r) {
+        parallel_for(mesh.parallel, mesh.rows, [&](std::size_t r) {
             const AxisRow ar = mesh.axis_row(0, r);
             for (int q = 0; q < static_cast<int>(nx); ++q) {
                 const int i = dir < 0 ? static_cast<int>(nx) - 1 - q : q;
@@ -123,7 +126,7 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
     // y and z: layers in the sweep order, vectorised along x in blocks of columns.
     const int n_a = grid.n[a];
     const std::size_t others = a == 1 ? grid.n[2] : ny, blocks = (nx + 31) / 32;
-    for_each_pair(mesh.parallel, others, blocks, [&](std::size_t o, std::size_t blk) {
+    parallel_for_pairs(mesh.parallel, others, blocks, [&](std::size_t o, std::size_t blk) {
             for (int q = 0; q < n_a; ++q) {
                 const int layer = dir < 0 ? n_a - 1 - q : q;
                 const std::size_t r = a == 1 ? layer + ny * o : o + ny * layer;

@@ -42,7 +42,7 @@ void pressure_faces(const FlowMesh& mesh, int a, double gravity, const FlowState
                     const Potential& potential, const AxisLoads& loads, AxisPressureFaces& pf, AxisFaces& faces) {
     const double *psi = potential.cell.data(), *psi_face = potential.face[a].data();
     const double *load = loads.load.data(), *carry = loads.carry.data(), h = mesh.grid.h[a];
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         FaceState L = face_state(state, &cl, a, lo), R = face_state(state, &cl, a, hi);
         pf.corr_lo[f] = F.kind == kWallBelow ? 0.0 : hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
@@ -62,7 +62,7 @@ void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& st
                      const AxisPressureFaces& pf, AxisFaces& out) {
     const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
     const double h = mesh.grid.h[a];
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         double P_lo = pf.p_lo[f], P_hi = pf.p_hi[f];
         if (F.kind == kInterior) {  // each side's share of the (limited) face force
@@ -94,7 +94,7 @@ void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings,
     const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
     const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
     const double* Phi_co = closures.Phi_co.data();
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         if (!open_face(F, Phi, Phi_vac)) {
             pf.predictor[f] = 0.0;
@@ -120,7 +120,7 @@ void face_donors(const FlowMesh& mesh, const FlowSettings& settings, int a, doub
     const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
     const double* from_lower = reconstruction ? reconstruction->from_lower()[a].data() : nullptr;
     const double* from_upper = reconstruction ? reconstruction->from_upper()[a].data() : nullptr;
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         if (!open_face(F, Phi, Phi_vac)) {
             pf.coupling[f] = pf.donor[f] = pf.flux[f] = 0.0;
@@ -148,7 +148,7 @@ void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& 
     const AxisFields flux = axis_fields(pf, &AxisPressureFaces::flux);
     const AxisWeights rate = axis_weights(mesh, dt);
     double* r = change.data();
-    mesh.for_inside_cells(
+    mesh.parallel_for_inside_cells(
         [&](std::size_t c, int i, const AxisRow* ar) { r[c] = -face_balance(flux, rate, i, ar); });
 }
 
@@ -167,7 +167,7 @@ void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const Flo
                                const CellClosures& closures, const AxisPressureFaces& pf, const std::vector<double>& dp,
                                AxisFaces& out) {
     const double h = mesh.grid.h[a], *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         double U = 0.0;
         if (F.kind == kInterior)
@@ -184,15 +184,15 @@ void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, c
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
     double* s = scale.data();
-    mesh.for_each_inside([&](std::size_t c) { s[c] = 1.0; });
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+    mesh.parallel_for_inside([&](std::size_t c) { s[c] = 1.0; });
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
         if (!is_dust(Phi[c], Phi_co[c])) return;
         const double out = face_outflow(M, rate, i, ar);  // the share of Phi that leaves in this step
         if (out > kDustOutflow * Phi[c]) s[c] = kDustOutflow * Phi[c] / out;
     });
     for (int a = 0; a < 3; ++a)
         if (mesh.active[a])
-            mesh.for_each_face(a, [&](const MeshFace& F) {
+            mesh.parallel_for_faces(a, [&](const MeshFace& F) {
                 double& M = faces[a].mass[F.f];
                 M *= s[M > 0.0 ? F.lo : F.hi];
             });
@@ -204,14 +204,14 @@ void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<do
     const AxisWeights inv_h = axis_weights(mesh);
     const double* before = Phi.data();
     double* after = Phi_after.data();
-    mesh.for_inside_cells(
+    mesh.parallel_for_inside_cells(
         [&](std::size_t c, int i, const AxisRow* ar) { after[c] = mass_balance(before[c], dt, M, inv_h, i, ar); });
 }
 
 void semi_implicit_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const AxisPressureFaces& pf,
                                const std::vector<double>& dp, const std::vector<double>& Phi_after, AxisFaces& out) {
     const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
-    mesh.for_each_face(a, [&](const MeshFace& F) {
+    mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         const FaceState L = face_state(state, nullptr, a, lo), R = face_state(state, nullptr, a, hi);
         double P_lo = dp[lo], P_hi = dp[hi];  // walls: the inside cell's increment, no force

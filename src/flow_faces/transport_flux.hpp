@@ -12,8 +12,7 @@
 // The normal momentum is carried with the donor's u_n, not with the face velocity U = M/Phi_d: a
 // cell draining through a face whose U differs from its own u_n would otherwise keep the momentum
 // difference M (u_n - U) dt/h in its remaining mass, a kick that grows without bound as the cell
-// empties (measured: dust at 1e5 m/s and T ~ 1e9 m^2/s^2 in a collapsing heap, docs/flow_solver.md
-// Sect. 5).
+// empties (dust of a collapsing heap once flew off that way: docs/history.md).
 //
 // Same orientation and result type as the HLLC flux of flow_faces/hllc.hpp: L is the cell below the
 // face along the axis, R the cell above.

@@ -66,9 +66,9 @@ struct FlowMesh {
     /// Calls body(c, i, row) for every cell c = i + nx r of every row's inside range, rows shared
     /// among threads, the cells of a row vectorised (body masks outside cells itself).
     template <class Body>
-    void for_row_cells(int axis, Body&& body) const {
+    void parallel_for_row_cells(int axis, Body&& body) const {
         const std::size_t nx = grid.n[0];
-        for_each_index(parallel, rows, [&](std::size_t r) {
+        parallel_for(parallel, rows, [&](std::size_t r) {
             const AxisRow row = axis_row(axis, r);
 #pragma omp simd
             for (int i = row_lo[r]; i < row_hi[r]; ++i) body(nx * r + i, i, row);
@@ -77,9 +77,9 @@ struct FlowMesh {
 
     /// Calls body(c, i, rows) for every inside cell, with the AxisRow of each axis in rows[3].
     template <class Body>
-    void for_inside_cells(Body&& body) const {
+    void parallel_for_inside_cells(Body&& body) const {
         const std::size_t nx = grid.n[0];
-        for_each_index(parallel, rows, [&](std::size_t r) {
+        parallel_for(parallel, rows, [&](std::size_t r) {
             AxisRow ar[3];
             for (int a = 0; a < 3; ++a) ar[a] = axis_row(a, r);
             for (int i = row_lo[r]; i < row_hi[r]; ++i)
@@ -90,15 +90,15 @@ struct FlowMesh {
     /// Calls body(face) for every interior and wall face of `axis` (a MeshFace), the list shared
     /// among threads.
     template <class Body>
-    void for_each_face(int axis, Body&& body) const {
+    void parallel_for_faces(int axis, Body&& body) const {
         const std::vector<MeshFace>& list = faces[axis];
-        for_each_index(parallel, static_cast<long>(list.size()), [&](long q) { body(list[q]); });
+        parallel_for(parallel, static_cast<long>(list.size()), [&](long q) { body(list[q]); });
     }
 
     /// Calls body(c) for every inside cell, the list shared among threads.
     template <class Body>
-    void for_each_inside(Body&& body) const {
-        for_each_index(parallel, inside_cells.size(), [&](std::size_t q) { body(inside_cells[q]); });
+    void parallel_for_inside(Body&& body) const {
+        parallel_for(parallel, inside_cells.size(), [&](std::size_t q) { body(inside_cells[q]); });
     }
 };
 

@@ -52,7 +52,7 @@ void compute_primitives(const FlowMesh& mesh, const Material& mat, const FlowSet
         }
         packed_cells += packed;
     };
-    if (fold_indices(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) > 0)
+    if (parallel_fold(mesh.parallel, mesh.rows, 0L, row, std::plus<long>()) > 0)
         for (std::size_t c : mesh.inside_cells)
             if (!(state.Phi[c] < cl.Phi_rcp[c]))
                 throw InvariantError("flow: Phi = " + format_number(state.Phi[c], 8) + " reached Phi_rcp = " +
@@ -66,7 +66,7 @@ void effective_pressure(const FlowMesh& mesh, const FlowFaces& faces, CellClosur
     double *eta = cl.eta.data(), *lambda = cl.lambda.data(), *epsPhi = cl.epsPhi.data();
     const double* p = cl.p.data();
     const double* P[3] = {faces[0].p.data(), faces[1].p.data(), faces[2].p.data()};
-    mesh.for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
         double p_eff = p[c];
         for (int a = 0; a < 3; ++a) {
             if (!mesh.active[a]) continue;

@@ -16,8 +16,8 @@
 //
 // For the power law with beta = 1 (the default), p (1 - Phi/Phi_rcp) = Phi T + T0 (Phi - Phi_co)^+
 // is linear in Phi and the inverse has a closed form; other laws are inverted by a safeguarded
-// Newton iteration on p(Phi), started at a guess (the cell's Phi before the step): in the 50-cell
-// drum with beta = 3, 3.5 closure evaluations per call with the slope's (1 s of drum time).
+// Newton iteration on p(Phi), started at a guess (the cell's Phi before the step), which takes a
+// few closure evaluations per call (docs/flow_solver_choices.md, "Cost of a step").
 #pragma once
 
 #include "closures/closures.hpp"

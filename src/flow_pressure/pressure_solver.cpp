@@ -60,7 +60,7 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
 
 void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state,
                                    const CellClosures& cl, const Eigen::VectorXd& step) {
-    for_each_index(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
+    parallel_for(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
         const std::size_t c = mesh.inside_cells[q];
         const long r = pattern_.unknown[c];
         const double T = state.T[c], Phi_co = cl.Phi_co[c], Phi_rcp = cl.Phi_rcp[c];
@@ -76,10 +76,9 @@ void PressureSolver::newton_update(const FlowMesh& mesh, const Material& materia
     });
 }
 
-PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                                         const CellClosures& cl, const PressureFaces& faces,
-                                         const std::vector<double>& change, double accuracy, bool solved_guess,
-                                         std::vector<double>& dp) {
+void PressureSolver::assemble(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                              const CellClosures& cl, const PressureFaces& faces, const std::vector<double>& change,
+                              const std::vector<double>& dp) {
     const long rows = J_.rows();
     double* value = laplacian_.valuePtr();
     // The coupling part: K_f on both diagonals, -K_f off the diagonal.
@@ -89,43 +88,65 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             if (f.kind == kInterior && !f.repeat && faces[a].coupling[f.f] != 0.0)
                 pattern_.couple(value, a, f, faces[a].coupling[f.f]);
     std::copy(value, value + laplacian_.nonZeros(), J_.valuePtr());
-    Eigen::VectorXd base(rows), target(rows);
+    base_.resize(rows), target_.resize(rows);
     x_.resize(rows), volume_.resize(rows), slope_.resize(rows), F_.resize(rows);
     for (std::size_t c : mesh.inside_cells) {
         const long r = pattern_.unknown[c];
-        base[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], state.Phi[c]).Phi;
-        target[r] = change[c];
+        base_[r] = volume_at_pressure(material, cl.p[c], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], state.Phi[c]).Phi;
+        target_[r] = change[c];
         x_[r] = dp[c];
     }
+}
+
+double PressureSolver::residual(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                                const CellClosures& cl) {
+    // Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp: where
+    // dPhi/dp is large (a bed at T_floor, with p + dp near 0) that alone leaves a residual of
+    // slope * eps * (|p| + |dp|), far above kRoundOff, which no Newton step can reduce (the step
+    // rounds away in dp + step).
+    F_ = laplacian_ * x_ - target_;
+    auto cell = [&](double& resolution, std::size_t q) {
+        const std::size_t c = mesh.inside_cells[q];
+        const long r = pattern_.unknown[c];
+        const VolumeAtPressure v =
+            volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], base_[r]);
+        F_[r] += v.Phi - base_[r];
+        volume_[r] = v.Phi, slope_[r] = v.slope;
+        resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
+    };
+    return parallel_fold(mesh.parallel, mesh.inside_cells.size(), 0.0, cell, [](double a, double b) { return std::max(a, b); });
+}
+
+int PressureSolver::newton_step(const FlowMesh& mesh, double tolerance) {
+    const double* value = laplacian_.valuePtr();
+    for (long r = 0; r < J_.rows(); ++r) J_.valuePtr()[pattern_.diagonal[r]] = value[pattern_.diagonal[r]] + slope_[r];
+    cg_.factorize(J_);
+    // Each solve only needs to bring the residual well below the Newton tolerance: with the
+    // warm start that is often a small relative reduction.
+    const double krylov_tolerance = std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm()));
+    // On a grid that runs on threads the whole CG in one parallel region (linalg/conjugate_gradients.hpp).
+    if (mesh.parallel) return static_cast<int>(team_cg(J_, cg_.preconditioner(), -F_, krylov_tolerance, step_).iterations) + 1;
+    cg_.setTolerance(krylov_tolerance);
+    step_ = cg_.solve(-F_);
+    return static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
+}
+
+PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
+                                         const CellClosures& cl, const PressureFaces& faces,
+                                         const std::vector<double>& change, double accuracy, bool solved_guess,
+                                         std::vector<double>& dp) {
+    assemble(mesh, material, state, cl, faces, change, dp);
     PressureSolveStats stats;
     // Newton stops at `accuracy` times the largest mass change of the explicit fluxes, and at
     // round-off when they change nothing (a bed at rest stays at rest to round-off).
-    const double tolerance = accuracy * target.lpNorm<Eigen::Infinity>() + kRoundOff;
-    // F = Phi(p + dp) - Phi(p) - r + K dp and the slopes dPhi/dp at p + dp; returns the residual's
-    // resolution. Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp:
-    // where dPhi/dp is large (a bed at T_floor: 2.6e9 measured, with p + dp near 0 and dp ~ 1e-5)
-    // that alone leaves a residual of slope * eps * (|p| + |dp|), far above kRoundOff, which no
-    // Newton step can reduce (the step rounds away in dp + step).
-    auto evaluate = [&] {
-        F_ = laplacian_ * x_ - target;
-        auto cell = [&](double& resolution, std::size_t q) {
-            const std::size_t c = mesh.inside_cells[q];
-            const long r = pattern_.unknown[c];
-            const VolumeAtPressure v =
-                volume_at_pressure(material, cl.p[c] + x_[r], state.T[c], cl.Phi_rcp[c], cl.Phi_co[c], base[r]);
-            F_[r] += v.Phi - base[r];
-            volume_[r] = v.Phi, slope_[r] = v.slope;
-            resolution = std::max(resolution, kResolutionUlps * DBL_EPSILON * v.slope * (std::fabs(cl.p[c]) + std::fabs(x_[r])));
-        };
-        return fold_indices(mesh.parallel, mesh.inside_cells.size(), 0.0, cell, [](double a, double b) { return std::max(a, b); });
-    };
-    double resolution = evaluate();
+    const double tolerance = accuracy * target_.lpNorm<Eigen::Infinity>() + kRoundOff;
+    double resolution = residual(mesh, material, state, cl);
     // The warm start, unless it is further from the solution than no increment at all (F = -r
-    // there): after a sudden change of the state the last step's dp can be a poor guess (in the
-    // rolling drum it once started at |F| = 10 against |r| = 8e-3; 7 % fewer Newton steps).
-    if (F_.lpNorm<Eigen::Infinity>() > target.lpNorm<Eigen::Infinity>() && x_.any()) {
+    // there): after a sudden change of the state the last step's dp can be a poor guess
+    // (docs/flow_solver_choices.md, "Warm starts").
+    if (F_.lpNorm<Eigen::Infinity>() > target_.lpNorm<Eigen::Infinity>() && x_.any()) {
         x_.setZero();
-        resolution = evaluate();
+        resolution = residual(mesh, material, state, cl);
     }
     for (;; ++stats.newton) {
         stats.residual = F_.lpNorm<Eigen::Infinity>();
@@ -138,22 +159,9 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
             break;
         }
         if (stats.newton == kMaxNewton) break;
-        for (long r = 0; r < rows; ++r) J_.valuePtr()[pattern_.diagonal[r]] = value[pattern_.diagonal[r]] + slope_[r];
-        cg_.factorize(J_);
-        // Each solve only needs to bring the residual well below the Newton tolerance: with the
-        // warm start that is often a small relative reduction.
-        const double krylov_tolerance = std::min(kKrylovTolerance, std::max(kKrylovFloor, 0.1 * tolerance / F_.norm()));
-        // On a grid that runs on threads the whole CG in one parallel region (linalg/conjugate_gradients.hpp).
-        if (mesh.parallel) {
-            stats.krylov += static_cast<int>(team_cg(J_, cg_.preconditioner(), -F_, krylov_tolerance, step_).iterations) + 1;
-        } else {
-            cg_.setTolerance(krylov_tolerance);
-            step_ = cg_.solve(-F_);
-            stats.krylov += static_cast<int>(cg_.iterations()) + 1;  // Eigen counts the iterations after the first
-        }
-        const Eigen::VectorXd& step = step_;
-        newton_update(mesh, material, state, cl, step);
-        resolution = evaluate();
+        stats.krylov += newton_step(mesh, tolerance);
+        newton_update(mesh, material, state, cl, step_);
+        resolution = residual(mesh, material, state, cl);
     }
     for (std::size_t c : mesh.inside_cells) dp[c] = x_[pattern_.unknown[c]];
     return stats;

@@ -8,8 +8,8 @@
 //   invariants  Phi(p + dp) < Phi_rcp in every cell (Newton approaches the root from below);
 //               r = 0 from a guess of 0 takes no Newton step and keeps dp = 0 exactly; a balanced
 //               bed, whose r is the rounding where gravity and the pressure gradient cancel, takes
-//               one and moves by round-off (at the defaults, verify_flow_rest's balanced box by at
-//               most 1024 units of 2^-52 in Phi over 2 s); max |F| stops at `accuracy` max |r|
+//               one and moves by round-off (how far at the defaults: verify_flow_rest and
+//               docs/flow_solver_pressure.md); max |F| stops at `accuracy` max |r|
 //               over the whole domain, so two runs that differ by rounding (the slab of
 //               verify_flow_rotation and its 2-D run) differ by what that tolerance admits
 //
@@ -85,9 +85,20 @@ private:
     /// stiff branch (Phi > Phi_co) below the kink (header comment).
     void newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
                        const Eigen::VectorXd& step);
+    /// The Jacobian's coupling part from the faces' K, and per row Phi(p) (base_), r (target_) and
+    /// the guess dp (x_).
+    void assemble(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                  const PressureFaces& faces, const std::vector<double>& change, const std::vector<double>& dp);
+    /// F = Phi(p + dp) - Phi(p) - r + K dp, and Phi(p + dp) and dPhi/dp per row; returns how finely
+    /// F can resolve dp (below which no Newton step can reduce it).
+    double residual(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl);
+    /// The Newton step step_ = -J^-1 F, by conjugate gradients to what the Newton tolerance
+    /// needs; returns its iterations, counted as Eigen's CG counts them plus one.
+    int newton_step(const FlowMesh& mesh, double tolerance);
     CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow_fields/cell_pattern.hpp)
     Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, volume_, slope_, F_, step_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F, Newton step
+    Eigen::VectorXd base_, target_;                  // per row: Phi(p) at the start of the solve, r
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;
 };
 

@@ -13,7 +13,7 @@
 //               on any number of threads
 //
 // Used by the pressure solve on grids that run on threads (core/threads.hpp), where Eigen's CG
-// would open a region for each product and each preconditioner sweep (about 100 per step) and
+// would open a region for each product and each preconditioner sweep and
 // keep its dot products and updates on one thread.
 #pragma once
 

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <map>
 
-#include <omp.h>
 #include <cstdlib>
 
 namespace granseg {
@@ -19,35 +18,26 @@ constexpr long kCoarsestRows = 40;
 /// a loop over fewer than about 1,000 rows costs less than waking a second thread).
 constexpr long kParallelRows = 1024;
 /// A row with a_ii >= kDominance sum_{j != i} |a_ij| stays out of the coarse levels (header
-/// comment). Measured on the drum's Jacobians: 2, 5, 20 and 1e9 give the same iterations (the
-/// dust rows, which matter, have no coupling at all).
+/// comment). The factor hardly matters: the dust rows, which matter, have no coupling at all (the
+/// values tried: docs/history.md, "Constants of the flow step").
 constexpr double kDominance = 5.0;
-/// Scale of the coarse correction, below sqrt(2) (header comment). CG iterations to 1e-7 on the
-/// drum's Jacobians at 50 / 100 / 200 cells (docs/history.md, flow solver): V-cycle 9 / 12 / 17
-/// with 1.0, 11 / 13 / 14 with 1.4, 14 / 17 / 19 with 1.8; W-cycle 8 / 9 / 11 with 1.0, 8 / 9 / 10
-/// with 1.4.
+/// Scale of the coarse correction, below sqrt(2) (header comment): piecewise-constant
+/// prolongation makes the coarse corrections too small, and this factor buys back most of the
+/// iterations they cost on finer grids (measured against 1.0 and 1.8: docs/history.md, "Constants
+/// of the flow step").
 constexpr double kOverCorrection = 1.4;
 
-/// Calls body(begin, end) on [0, m). Within a team (`team`: every thread of an enclosing parallel
-/// region calls this) each thread takes its share and waits for the others at a barrier; else
-/// split among new OpenMP threads where `parallel` and m >= kParallelRows, else once (outside an
-/// OpenMP region: a region costs about a microsecond on one thread too, and a W-cycle passes many
-/// small levels).
+/// Calls body(begin, end) on blocks of [0, m): within a team (every thread of the team calls
+/// this) each thread's share, the team waiting for all at the end (Team::share); else one block
+/// per OpenMP thread where `parallel` and m >= kParallelRows, else one block on this thread
+/// (outside an OpenMP region: a region costs about a microsecond on one thread too, and a W-cycle
+/// passes many small levels).
 template <class Body>
-void for_rows(long m, bool parallel, Body&& body, bool team = false) {
-    if (team) {
-        const long t = omp_get_thread_num(), threads = omp_get_num_threads();
-        body(m * t / threads, m * (t + 1) / threads);
-#pragma omp barrier
-    } else if (on_threads(parallel) && m >= kParallelRows) {
-#pragma omp parallel
-        {
-            const long t = omp_get_thread_num(), threads = omp_get_num_threads();
-            body(m * t / threads, m * (t + 1) / threads);
-        }
-    } else {
-        body(0L, m);
-    }
+void for_rows(long m, bool parallel, Team* team, Body&& body) {
+    if (team)
+        team->share(m, body);
+    else
+        parallel_blocks(parallel && m >= kParallelRows, m, body);
 }
 
 /// b_r - sum_k a_rk x_k: the residual of row r of a compressed row-major matrix.
@@ -138,9 +128,7 @@ void Multilevel::build(const Matrix& pattern, const std::vector<std::array<int, 
     // only where the over-correction keeps B positive definite (header comment): `bound` is an
     // upper bound of the eigenvalues of B A on the level below. The finest level is visited once:
     // a second visit costs a residual and two transfers over all cells, more than the
-    // iterations it saves (drum, 50 / 100 / 200 cells: 5.4 / 7.1 / 9.0 iterations per Newton
-    // step against 5.8 / 8.1 / 10.9, but 1.2-1.3 times the time per step; all levels once:
-    // 7.1 / 10.0 / 13.1 iterations, 1.0-1.1 times the time).
+    // iterations it saves (measured on the drum: docs/history.md, "Constants of the flow step").
     double bound = 1.0;
     for (std::size_t l = level_.size() - 1; l-- > 0;) {
         Level& L = level_[l];
@@ -178,7 +166,7 @@ Multilevel& Multilevel::take_values(const double* value) {
     return *this;
 }
 
-void Multilevel::sweep(const Level& L, bool backward, bool team) const {
+void Multilevel::sweep(const Level& L, bool backward, Team* team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     double* x = L.x.data();
@@ -186,17 +174,17 @@ void Multilevel::sweep(const Level& L, bool backward, bool team) const {
         const std::vector<long>& rows = L.colour[backward ? colours - 1 - q : q];
         // From x = 0 (the forward sweep), the first colour's neighbours are all still 0.
         const bool alone = !backward && q == 0;
-        for_rows(static_cast<long>(rows.size()), parallel_, [&, b, x](long begin, long end) {
+        for_rows(static_cast<long>(rows.size()), parallel_, team, [&, b, x](long begin, long end) {
             for (long s = begin; s < end; ++s) {
                 const long r = rows[s];
                 const double d = L.A.valuePtr()[L.diagonal[r]];
                 x[r] = alone ? b[r] / d : x[r] + row_residual(L.A, b, x, r) / d;
             }
-        }, team);
+        });
     }
 }
 
-void Multilevel::restrict_residual(const Level& L, bool swept, bool team) const {
+void Multilevel::restrict_residual(const Level& L, bool swept, Team* team) const {
     const int colours = static_cast<int>(L.colour.size());
     const double* b = L.b.data();
     const double* x = L.x.data();
@@ -204,12 +192,12 @@ void Multilevel::restrict_residual(const Level& L, bool swept, bool team) const 
     for (int q = 0; q < colours; ++q) {
         const std::vector<long>& rows = L.colour[q];
         const bool zero = swept && q == colours - 1;
-        for_rows(static_cast<long>(rows.size()), parallel_, [&, b, x, res](long begin, long end) {
+        for_rows(static_cast<long>(rows.size()), parallel_, team, [&, b, x, res](long begin, long end) {
             for (long s = begin; s < end; ++s) {
                 const long r = rows[s];
                 res[r] = zero || L.joins[r] == 0.0 ? 0.0 : row_residual(L.A, b, x, r);
             }
-        }, team);
+        });
     }
 }
 
@@ -220,12 +208,12 @@ void Multilevel::gather_residual(const Level& L, const Level& C) const {
     for (long r = 0; r < L.A.rows(); ++r) coarse[L.aggregate[r]] += res[r];
 }
 
-void Multilevel::correct(const Level& L, const Level& C, bool team) const {
+void Multilevel::correct(const Level& L, const Level& C, Team* team) const {
     double* x = L.x.data();
     const double* xc = C.x.data();
-    for_rows(L.A.rows(), parallel_, [&, x, xc](long begin, long end) {
+    for_rows(L.A.rows(), parallel_, team, [&, x, xc](long begin, long end) {
         for (long r = begin; r < end; ++r) x[r] += kOverCorrection * L.joins[r] * xc[L.aggregate[r]];
-    }, team);
+    });
 }
 
 void Multilevel::cycle(std::size_t l) const {
@@ -236,41 +224,39 @@ void Multilevel::cycle(std::size_t l) const {
     }
     const Level& C = level_[l + 1];
     L.x.setZero();
-    sweep(L, false, false);
+    sweep(L, false, nullptr);
     for (int visit = 0; visit < L.visits; ++visit) {
-        restrict_residual(L, visit == 0, false);
+        restrict_residual(L, visit == 0, nullptr);
         gather_residual(L, C);
         cycle(l + 1);
-        correct(L, C, false);
+        correct(L, C, nullptr);
     }
-    sweep(L, true, false);
+    sweep(L, true, nullptr);
 }
 
-void Multilevel::team_cycle(const double* b) const {
+void Multilevel::team_cycle(Team& team, const double* b) const {
     const Level& L = level_[0];
     double* x = L.x.data();
     double* fine_b = L.b.data();
-    for_rows(L.A.rows(), parallel_, [&, x, fine_b](long begin, long end) {
+    team.share(L.A.rows(), [&, x, fine_b](long begin, long end) {
         for (long r = begin; r < end; ++r) fine_b[r] = b[r], x[r] = 0.0;
-    }, true);
+    });
     if (level_.size() == 1) {
-#pragma omp single
-        L.x = coarsest_.solve(L.b);
+        team.single([&] { L.x = coarsest_.solve(L.b); });
         return;
     }
     const Level& C = level_[1];
-    sweep(L, false, true);
+    sweep(L, false, &team);
     for (int visit = 0; visit < L.visits; ++visit) {
-        restrict_residual(L, visit == 0, true);
-        // The coarse levels on one thread; the others wait at the end of the single block.
-#pragma omp single
-        {
+        restrict_residual(L, visit == 0, &team);
+        // The coarse levels on one thread while the others wait.
+        team.single([&] {
             gather_residual(L, C);
             cycle(1);
-        }
-        correct(L, C, true);
+        });
+        correct(L, C, &team);
     }
-    sweep(L, true, true);
+    sweep(L, true, &team);
 }
 
 const Multilevel::Vector& Multilevel::solve(const Vector& b) const {

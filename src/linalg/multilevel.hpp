@@ -24,8 +24,8 @@
 // * Rows that their diagonal dominates (a_ii >= 5 sum |a_ij|; the dust, whose faces have weight
 //   0) stay out of the coarse levels (their row of P is 0), as in Notay's aggregation AMG (ETNA
 //   37, 2010): the smoother solves them, and in an aggregate with a bed cell their huge a_ii
-//   would pin the coarse value and cut the bed's coarse correction at its surface (measured: 29
-//   instead of 13 iterations at 100 cells). Which rows join follows the values, per matrix.
+//   would pin the coarse value and cut the bed's coarse correction at its surface (its cost in
+//   iterations: docs/history.md). Which rows join follows the values, per matrix.
 // * Cycle: one multicolour Gauss-Seidel sweep before the coarse correction (colours in order)
 //   and its adjoint after it (colours in reverse order), a direct solve (dense LDL^T) on the
 //   coarsest level (at most kCoarsestRows rows): the preconditioner B is a fixed symmetric
@@ -51,6 +51,8 @@
 
 namespace granseg {
 
+class Team;
+
 class Multilevel {
 public:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
@@ -67,10 +69,10 @@ public:
 
     /// z = B b: one cycle from z = 0 for A z = b (valid until the next call).
     const Vector& solve(const Vector& b) const;
-    /// The same cycle, called by every thread of an OpenMP team (inside its parallel region):
-    /// the finest level's loops shared, with barriers, the coarse levels on one thread; z (the same
-    /// bits on any number of threads) is then `result()`. b: one value per row.
-    void team_cycle(const double* b) const;
+    /// The same cycle, called by every thread of a team (core/threads.hpp, run_as_team): the
+    /// finest level's loops shared, the coarse levels on one thread; z (the same bits on any
+    /// number of threads) is then `result()`, complete on every thread. b: one value per row.
+    void team_cycle(Team& team, const double* b) const;
     /// z of the last team_cycle (or solve).
     const Vector& result() const { return level_[0].x; }
 
@@ -101,16 +103,17 @@ private:
         mutable Vector x, r, b;                 // the V-cycle's iterate, residual and right-hand side
     };
 
-    // `team`: called by every thread of an OpenMP team, each taking its share of the rows.
+    // `team`: called by every thread of a team, each taking its share of the rows (nullptr: one
+    // parallel region per loop where the rows are many, or this thread alone).
     /// One Gauss-Seidel sweep for A x = b on level L, colours in order or (backward) in reverse order.
-    void sweep(const Level& L, bool backward, bool team) const;
+    void sweep(const Level& L, bool backward, Team* team) const;
     /// The residual r = b - A x of level L (0 on the rows that do not join the coarse level and,
     /// right after a forward sweep (`swept`), on its last colour's rows)...
-    void restrict_residual(const Level& L, bool swept, bool team) const;
+    void restrict_residual(const Level& L, bool swept, Team* team) const;
     /// ...and its sum P^T r into the coarse right-hand side (one thread).
     void gather_residual(const Level& L, const Level& C) const;
     /// x += a P x_c on level L (the over-corrected coarse correction).
-    void correct(const Level& L, const Level& C, bool team) const;
+    void correct(const Level& L, const Level& C, Team* team) const;
     /// x = cycle for A x = b on level l, from x = 0.
     void cycle(std::size_t l) const;
 

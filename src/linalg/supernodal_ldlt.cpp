@@ -2,10 +2,10 @@
 
 #include "core/error.hpp"
 #include "core/threads.hpp"
+#include "linalg/elimination_tree.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/OrderingMethods>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,63 +26,23 @@ constexpr long kDenseBlock = 16;
 /// The split into two lanes stops expanding the top after this many supernodes (a balanced split
 /// of a minimum-degree tree is found within a few dozen).
 constexpr int kSplitExpansions = 256;
-
-/// Each column's lower neighbours in A's pattern, in the numbering new_of_old.
-std::vector<std::vector<long>> lower_neighbours(const SupernodalLDLT::Matrix& A, const std::vector<long>& new_of_old) {
-    std::vector<std::vector<long>> below(A.cols());
-    for (long c = 0; c < A.outerSize(); ++c)
-        for (SupernodalLDLT::Matrix::InnerIterator it(A, c); it; ++it) {
-            const long i = new_of_old[it.row()], j = new_of_old[c];
-            if (i > j) below[j].push_back(i);
-        }
-    return below;
-}
-
-/// The elimination tree (parent of each column, -1 at a root) of the matrix whose column j has
-/// the lower neighbours below[j] (Liu's algorithm with path compression).
-std::vector<long> elimination_tree(const std::vector<std::vector<long>>& below) {
-    const long n = static_cast<long>(below.size());
-    std::vector<long> parent(n, -1), ancestor(n, -1);
-    std::vector<std::vector<long>> above(n);  // row k's entries left of the diagonal
-    for (long j = 0; j < n; ++j)
-        for (long i : below[j]) above[i].push_back(j);
-    for (long k = 0; k < n; ++k)
-        for (long i : above[k])
-            while (i != -1 && i < k) {
-                const long next = ancestor[i];
-                ancestor[i] = k;
-                if (next == -1) parent[i] = k;
-                i = next;
-            }
-    return parent;
-}
-
-/// The columns in a postorder of the tree (children before parents, each subtree contiguous).
-std::vector<long> postorder(const std::vector<long>& parent) {
-    const long n = static_cast<long>(parent.size());
-    std::vector<long> head(n, -1), next(n, -1), order, stack;
-    for (long j = n - 1; j >= 0; --j)  // children lists in ascending order
-        if (parent[j] != -1) next[j] = head[parent[j]], head[parent[j]] = j;
-    for (long root = 0; root < n; ++root) {
-        if (parent[root] != -1) continue;
-        stack.push_back(root);
-        while (!stack.empty()) {
-            const long j = stack.back();
-            if (head[j] != -1) {  // descend into the next unvisited child
-                const long child = head[j];
-                head[j] = next[child];
-                stack.push_back(child);
-            } else {
-                order.push_back(j);
-                stack.pop_back();
-            }
-        }
-    }
-    return order;
-}
 }  // namespace
 
 void SupernodalLDLT::analyze(const Matrix& A) {
+    const std::vector<std::vector<long>> below = order_rows(A);
+    const std::vector<long> parent = elimination_tree(below);
+    std::vector<long> super_parent;
+    std::vector<std::vector<long>> children;
+    form_supernodes(parent, column_counts(below, parent), super_parent, children);
+    gather_rows(below, children);
+    place_entries(A);
+    split(update_work(), super_parent, children);
+    const long supers = supernodes();
+    for (Lane& lane : lanes_) lane.relative.assign(rows(), 0);
+    next_.assign(supers, -1), link_.assign(supers, -1), cursor_.assign(supers, 0);
+}
+
+std::vector<std::vector<long>> SupernodalLDLT::order_rows(const Matrix& A) {
     const long n = A.rows();
     // The fill-reducing order, then a postorder of its elimination tree (same fill, and the
     // columns of every subtree, so of every supernode, become consecutive).
@@ -95,17 +55,13 @@ void SupernodalLDLT::analyze(const Matrix& A) {
     for (long k = 0; k < n; ++k) order_[k] = minimum_degree.indices()[post[k]];
     for (long k = 0; k < n; ++k) new_of_old[order_[k]] = k;
     new_of_old_ = new_of_old;
-    const std::vector<std::vector<long>> below = lower_neighbours(A, new_of_old);
-    const std::vector<long> parent = elimination_tree(below);
+    return lower_neighbours(A, new_of_old);
+}
 
-    // Column counts of L below the diagonal: row k's entries are the tree paths from its entries
-    // of A up to k.
-    std::vector<long> count(n, 0), mark(n, -1);
-    for (long j = 0; j < n; ++j)
-        for (long k : below[j])
-            for (long i = j; mark[i] != k && i != k; i = parent[i]) mark[i] = k, ++count[i];
-
-    // Supernodes: chains j -> j + 1 = parent(j), merged while the padded zeros stay few.
+void SupernodalLDLT::form_supernodes(const std::vector<long>& parent, const std::vector<long>& count,
+                                     std::vector<long>& super_parent, std::vector<std::vector<long>>& children) {
+    const long n = static_cast<long>(parent.size());
+    // Chains j -> j + 1 = parent(j), merged while the padded zeros stay few.
     first_.assign(1, 0);
     for (long j = 0; j + 1 < n; ++j) {
         const long f = first_.back(), next = j + 1;
@@ -125,18 +81,22 @@ void SupernodalLDLT::analyze(const Matrix& A) {
     super_of_.resize(n);
     for (long s = 0; s < supers; ++s)
         for (long j = first_[s]; j < first_[s + 1]; ++j) super_of_[j] = s;
-    std::vector<long> super_parent(supers, -1);
-    std::vector<std::vector<long>> children(supers);
+    super_parent.assign(supers, -1);
+    children.assign(supers, {});
     for (long s = 0; s < supers; ++s) {
         const long p = parent[first_[s + 1] - 1];
         if (p != -1) super_parent[s] = super_of_[p], children[super_of_[p]].push_back(s);
     }
+}
 
+void SupernodalLDLT::gather_rows(const std::vector<std::vector<long>>& below,
+                                 const std::vector<std::vector<long>>& children) {
     // Each supernode's rows: its columns, then below its last column the entries of A in its
     // columns and the rows of its child supernodes.
+    const long supers = supernodes();
     row_start_.assign(1, 0);
     row_.clear();
-    std::fill(mark.begin(), mark.end(), -1);
+    std::vector<long> mark(below.size(), -1);
     for (long s = 0; s < supers; ++s) {
         const long last = first_[s + 1] - 1;
         std::vector<long> rows;
@@ -155,22 +115,21 @@ void SupernodalLDLT::analyze(const Matrix& A) {
     value_start_.assign(1, 0);
     for (long s = 0; s < supers; ++s) value_start_.push_back(value_start_.back() + width(s) * height(s));
     value_.assign(value_start_.back(), 0.0);
+}
 
+void SupernodalLDLT::place_entries(const Matrix& A) {
     // Where each stored entry of A (lower triangle in the new numbering) goes, by supernode.
     entry_start_.assign(1, 0);
     entry_.clear();
-    for (long s = 0; s < supers; ++s) {
+    for (long s = 0; s < supernodes(); ++s) {
         const auto begin = row_.begin() + row_start_[s], end = row_.begin() + row_start_[s + 1];
         for (long j = first_[s]; j < first_[s + 1]; ++j)
             for (long p = A.outerIndexPtr()[order_[j]]; p < A.outerIndexPtr()[order_[j] + 1]; ++p) {
-                const long i = new_of_old[A.innerIndexPtr()[p]];
+                const long i = new_of_old_[A.innerIndexPtr()[p]];
                 if (i >= j) entry_.push_back({p, (j - first_[s]) * height(s) + (std::lower_bound(begin, end, i) - begin)});
             }
         entry_start_.push_back(static_cast<long>(entry_.size()));
     }
-    split(update_work(), super_parent, children);
-    for (Lane& lane : lanes_) lane.relative.assign(n, 0);
-    next_.assign(supers, -1), link_.assign(supers, -1), cursor_.assign(supers, 0);
 }
 
 std::vector<double> SupernodalLDLT::update_work() const {
@@ -260,31 +219,19 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
     // Left-looking: supernode s takes the updates of every earlier supernode with rows in its
     // columns (the list link_[s]), then factors its panel. The two lanes' subtrees share no
     // supernode and no list: what waits for a top supernode is linked after both.
-    std::array<char, 2> ok{1, 1};
+    std::array<char, 2> ok{1, 1}, eigen_alone{1, 1};
     failed_row_ = -1;
-    bool eigen_alone = true;
-    auto run_lane = [&](int l) {
+    // Eigen's dense products open their own OpenMP team when the caller's is not active and
+    // nbThreads() > 1; a lane keeps them to its own thread (the lanes' bits must not depend on
+    // the threads), which parallel_lanes ensures unless Eigen::setNbThreads() overrides it.
+    parallel_lanes(parallel, 2, [&](int l) {
+        eigen_alone[l] = Eigen::nbThreads() == 1;
         Lane& lane = lanes_[l];
         lane.pending.clear();
         for (const auto& [begin, end] : lane.subtrees)
             for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
-    };
-    // Eigen's dense products open their own OpenMP team when the caller's is not active and
-    // nbThreads() > 1; a lane's thread keeps them to itself (the lanes' bits must not depend on
-    // the threads): one thread for each lane's thread, or for this thread while it runs both.
-    if (on_threads(parallel)) {
-#pragma omp parallel for schedule(static, 1) reduction(&& : eigen_alone)
-        for (int l = 0; l < 2; ++l) {
-            omp_set_num_threads(1);  // this lane's thread only
-            eigen_alone = eigen_alone && Eigen::nbThreads() == 1;
-            run_lane(l);
-        }
-    } else {
-        const SerialScope one_thread(true);
-        eigen_alone = Eigen::nbThreads() == 1;
-        for (int l = 0; l < 2; ++l) run_lane(l);
-    }
-    if (!eigen_alone)
+    });
+    if (!eigen_alone[0] || !eigen_alone[1])
         throw InvariantError("supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "
                              "own inside a factorisation lane");
     if (!ok[0] || !ok[1]) return false;

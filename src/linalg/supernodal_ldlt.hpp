@@ -69,6 +69,18 @@ private:
     // value_[value_start_[s]] with leading dimension height(s).
     long width(long s) const { return first_[s + 1] - first_[s]; }
     long height(long s) const { return row_start_[s + 1] - row_start_[s]; }
+    // analyze(), step by step.
+    /// order_ and new_of_old_ (the fill-reducing order, postordered); returns the lower
+    /// neighbours of each column of A in that order.
+    std::vector<std::vector<long>> order_rows(const Matrix& A);
+    /// first_ and super_of_ from the elimination tree and the column counts; each supernode's
+    /// parent (-1 at a root) and children.
+    void form_supernodes(const std::vector<long>& parent, const std::vector<long>& count, std::vector<long>& super_parent,
+                         std::vector<std::vector<long>>& children);
+    /// row_start_, row_, value_start_ and value_: each supernode's rows and panel.
+    void gather_rows(const std::vector<std::vector<long>>& below, const std::vector<std::vector<long>>& children);
+    /// entry_start_ and entry_: where each stored entry of A goes in the panels.
+    void place_entries(const Matrix& A);
     /// Splits the supernodal tree into two sets of subtrees of about equal work and the top
     /// (the rest, factored after both).
     void split(const std::vector<double>& work, const std::vector<long>& parent,

@@ -46,7 +46,7 @@ void TridiagonalLines::factor(const Grid& grid, int axis, const std::vector<doub
     // choice gamma = -diag[0], which changes the first and the last pivot, and gets the
     // correction vector (gamma, 0, ..., 0, alpha) with alpha = -upper[n-1] (the coupling of cell
     // n-1 to cell 0); beta = -lower[0] couples cell 0 to cell n-1.
-    for_each_pair(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
+    parallel_for_pairs(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
             const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
             for (int m = 0; m < L.n; ++m) {
                 const std::size_t row = o * L.outer + m * L.step;
@@ -115,7 +115,7 @@ void TridiagonalLines::solve(std::vector<double>& x) const {
     const LineLayout L = layout(*grid_, axis_);
     const std::size_t last = static_cast<std::size_t>(L.n - 1) * L.step, blocks = (L.n_inner + kBlock - 1) / kBlock;
     double* data = x.data();
-    for_each_pair(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
+    parallel_for_pairs(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
             const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
             sweep(data, o, q0, q1);
             if (!cyclic_) return;

@@ -44,7 +44,7 @@ void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, co
             through_wall |= (m[f] != 0.0) & !(in[L] & in[U]);
         }
     };
-    const int through_wall = fold_indices(parallel_, rows, 0, row, [](int a, int b) { return a | b; });
+    const int through_wall = parallel_fold(parallel_, rows, 0, row, [](int a, int b) { return a | b; });
     const auto wall_flux = [&](std::size_t face) {
         return InvariantError("bulk transport: mass flux " + std::to_string(M[face]) + " through a wall face (axis " +
                               std::to_string(axis) + ", face " + std::to_string(face) + ")");
@@ -86,7 +86,7 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
     const unsigned char* in = inside_.data();
     const double* Phi = Phi_old.data();
     double *hat = hat_.data(), *u = phi.data();
-    for_each_index(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0; });
+    parallel_for(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(u[c], Phi[c]) : 0.0; });
     // The axes that carry mass (more than one cell and a flux field), in the order x, y, z.
     int axes[3], along = 0;
     double inv_h[3];
@@ -118,7 +118,7 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
             if (Phi[c] >= Phi_min && Phi[c] > 0.0 && out > largest_rate * Phi[c]) largest_rate = out / Phi[c];
         }
     };
-    return dt * fold_indices(parallel_, rows, 0.0, row, [](double a, double b) { return std::max(a, b); });
+    return dt * parallel_fold(parallel_, rows, 0.0, row, [](double a, double b) { return std::max(a, b); });
 }
 
 void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,

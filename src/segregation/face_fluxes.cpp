@@ -24,7 +24,7 @@ void segregation_face_fluxes(const Grid& grid, int axis, const FrozenFields& fie
         const std::size_t L = f.lower, U = f.upper;
         // The states either side of the face: each cell's value there, with its own Phi and a;
         // the interface values where the scheme reads them: given, else the means (assumption G2).
-        // (Built in place: copying the struct stalls store forwarding, +60 % run time.)
+        // (Built in place: a copy of the struct stalls store forwarding; docs/history.md.)
         InterfaceStates q{{at_upper[L], Phi[L], a[L]}, {at_lower[U], Phi[U], a[U]}};
         if (interface_values) {
             q.Phi_face = Phi_face.empty() ? 0.5 * (Phi[L] + Phi[U]) : Phi_face[f.face];

@@ -49,7 +49,7 @@ void MusclHancock::face_values(const std::vector<double>& q, const FaceFieldRefs
     double* lower[3] = {from_lower_[0].data(), from_lower_[1].data(), from_lower_[2].data()};
     double* upper[3] = {from_upper_[0].data(), from_upper_[1].data(), from_upper_[2].data()};
     const bool conservative = form == Form::conservative;
-    for_each_index(parallel_, cells_.size(), [&](std::size_t p) {
+    parallel_for(parallel_, cells_.size(), [&](std::size_t p) {
         const Cell& cell = cells_[p];
         const double qc = field[cell.c];
         double slope[3] = {0.0, 0.0, 0.0}, lowest = qc, highest = qc, rate = 0.0;

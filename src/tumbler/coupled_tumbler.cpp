@@ -103,7 +103,7 @@ std::vector<double> CoupledTumbler::phi_hat() const {
     const unsigned char* in = inside_.data();
     const double *Phi = flow_.Phi().data(), *phi = phi_.data();
     std::vector<double> hat(cells);
-    for_each_index(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0; });
+    parallel_for(parallel_, cells, [&](std::size_t c) { hat[c] = in[c] ? composition(phi[c], Phi[c]) : 0.0; });
     return hat;
 }
 
@@ -152,7 +152,7 @@ void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char*
         const double correction = std::max(phi[c] - Phi[c], -phi[c]);
         if (correction > 0.0) b.worst = std::max(b.worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
     };
-    const auto [excess, lowest, worst, nonfinite] = fold_indices(parallel_, cells, Bounds{}, cell, [](const Bounds& x, const Bounds& y) {
+    const auto [excess, lowest, worst, nonfinite] = parallel_fold(parallel_, cells, Bounds{}, cell, [](const Bounds& x, const Bounds& y) {
         return Bounds{std::max(x.excess, y.excess), std::min(x.lowest, y.lowest), std::max(x.worst, y.worst), x.nonfinite + y.nonfinite};
     });
     max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);

@@ -38,7 +38,8 @@ double MaterialPoints::interpolate(const std::vector<double>& f, double x, doubl
 }
 
 void MaterialPoints::advance(const std::vector<double>& ux, const std::vector<double>& uz, double dt) {
-    for_each_index(x_.size() >= 4096, x_.size(), [&](std::size_t p) {
+    // On the threads where the drum's grid runs on them (one rule for the whole run).
+    parallel_for(threads_pay(grid_.cells()), x_.size(), [&](std::size_t p) {
         const double xm = x_[p] + 0.5 * dt * interpolate(ux, x_[p], z_[p]), zm = z_[p] + 0.5 * dt * interpolate(uz, x_[p], z_[p]);
         x_[p] += dt * interpolate(ux, xm, zm), z_[p] += dt * interpolate(uz, xm, zm);
     });

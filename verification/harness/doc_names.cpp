@@ -133,7 +133,14 @@ TreeNames tree_names(const fs::path& root) {
             tree.files.insert(e.path().filename().string());
             if (std::string(dir) != "docs") tree.text += read_text(e.path()) + "\n";
         }
-    const std::string makefile = read_text(root / "Makefile");
+    // The Makefile and what it includes from mk/ (its sanitizer, page and speed rules).
+    std::string makefile = read_text(root / "Makefile");
+    if (fs::is_directory(root / "mk"))
+        for (const auto& e : fs::directory_iterator(root / "mk"))
+            if (e.path().extension() == ".mk") {
+                makefile += "\n" + read_text(e.path());
+                tree.files.insert(e.path().filename().string());
+            }
     tree.text += makefile;
     tree.files.insert({"Makefile", "README.md"});
     add_words(tree.text, tree.words);

@@ -1,6 +1,6 @@
 // Names a page shows in backticks must exist (verify_docs; docs/checked_pages.md): a file, a
 // function, a type, a scene key, a command-line option or a make target that a page names but
-// that is nowhere in the tree (src/, verification/, tests/, figures/, the Makefile) has been
+// that is nowhere in the tree (src/, verification/, tests/, figures/, the Makefile, mk/) has been
 // renamed or removed, or never existed, and the page teaches something the code does not have.
 //
 // What counts as a name, span by span (the text between two backticks, outside fenced blocks):
@@ -33,7 +33,7 @@ struct TreeNames {
     std::set<std::string> words, targets, files;  // identifiers; Makefile targets; file names
 };
 
-/// Reads src/, verification/, tests/, figures/ and the Makefile under `root`.
+/// Reads src/, verification/, tests/, figures/, the Makefile and mk/*.mk under `root`.
 TreeNames tree_names(const std::filesystem::path& root);
 
 /// The backticked names of `text` (a page at `page`, relative to tree.root) that exist nowhere
