@@ -45,6 +45,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "core/state_io.hpp"
 #include "flow/flow_solver.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/bulk_transport_fct.hpp"
@@ -80,6 +81,7 @@ struct CoupledTumblerSetup {
 /// Wall-clock seconds spent in the parts of the coupled step (for benchmarks).
 struct CoupledTimers {
     double flow = 0, bulk = 0, segregation = 0, feedback = 0;  // steps 1, 2, 3, 4
+    void checkpoint(StateIO& io) { io("flow", flow)("bulk", bulk)("segregation", segregation)("feedback", feedback); }
 };
 
 class CoupledTumbler {
@@ -164,6 +166,19 @@ private:
     double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
     double largest_bulk_clip_ = 0.0;
     CoupledTimers timers_;
+
+public:
+    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: the flow, phi
+    /// and the tracer, the fields of the last segregation sub-step, the sub-step schedule, the
+    /// counts and extremes, the timers. The rest is set-up (built from the setup as before) or
+    /// scratch of a step. A member added above that outlives a step belongs here too.
+    void checkpoint(StateIO& io) {
+        io("tumbler.flow", flow_)("tumbler.segregation", segregation_)("tumbler.frozen", frozen_)("tumbler.d_s", d_s_);
+        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.since_segregation", since_segregation_);
+        io("tumbler.segregation_step", segregation_step_)("tumbler.bulk_courant", bulk_courant_)("tumbler.substeps", substeps_);
+        io("tumbler.segregation_steps", segregation_steps_)("tumbler.max_excess", max_excess_)("tumbler.min_phi", min_phi_);
+        io("tumbler.largest_bulk_clip", largest_bulk_clip_)("tumbler.timers", timers_);
+    }
 };
 
 }  // namespace granseg
