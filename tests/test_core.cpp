@@ -13,11 +13,15 @@ using namespace granseg;
 BOOST_AUTO_TEST_SUITE(core)
 
 BOOST_AUTO_TEST_CASE(data_table_names_its_columns_first) {
-    DataTable t({"z", "phi"});
+    DataTable t;
     t.comment("source: test");
-    t.row({0.5, 0.25});
+    t.row({{"z", 0.5}, {"phi", 0.25}});
     BOOST_TEST(t.str() == "# z phi\n# source: test\n0.5 0.25\n");
-    BOOST_CHECK_THROW(t.row({1.0}), InputError);
+    BOOST_CHECK_THROW(t.row({{"z", 1.0}}), InvariantError);                  // a column missing
+    BOOST_CHECK_THROW(t.row({{"phi", 0.25}, {"z", 0.5}}), InvariantError);  // columns swapped
+    TableRow r{{"z", 1.0}};
+    t.row(r.add("phi", 0.5));
+    BOOST_TEST(t.rows() == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(atomic_write_creates_directories_and_leaves_no_temporary) {

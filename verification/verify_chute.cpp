@@ -147,13 +147,13 @@ int main(int argc, char** argv) {
         std::snprintf(line, sizeof line, "%5d x %-5d  %14.4e  %14.3e", N, N, r.l1, r.budget);
         t.note(line);
         if (N != 64) continue;
-        DataTable table({"x", "z", "phi", "exact"});
+        DataTable table;
         const Grid grid = Grid::plane_xz(N, N, 0.0, 0.0, kLength, 1.0);
         for (int i = 0; i < N; ++i) {
             for (int k = 0; k < N; ++k) {
                 const double x0 = i * kLength / N, z0 = k * 1.0 / N;
-                table.row({grid.center(0, i), grid.center(2, k), r.phi[grid.index(i, 0, k)],
-                           kPhi * exact_cell_average(x0, x0 + kLength / N, z0, z0 + 1.0 / N)});
+                table.row({{"x", grid.center(0, i)}, {"z", grid.center(2, k)}, {"phi", r.phi[grid.index(i, 0, k)]},
+                            {"exact", kPhi * exact_cell_average(x0, x0 + kLength / N, z0, z0 + 1.0 / N)}});
             }
             table.blank();
         }

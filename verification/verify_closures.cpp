@@ -224,7 +224,7 @@ void check_packing_fit(CheckTable& table, const Material& m) {
 }
 
 void write_figure_data(const verify::ProgramOptions& options, const Material& m) {
-    DataTable curves({"phi_hat", "Phi", "g", "p_k", "p_y", "p", "eta", "c"});
+    DataTable curves;
     curves.comment("T = 1e-4 m^2/s^2; one block per phi_hat (gnuplot index 0, 1, 2)");
     for (double x : {0.0, 0.4, 1.0}) {
         const double rcp = m.packing.Phi_rcp(x);
@@ -234,22 +234,25 @@ void write_figure_data(const verify::ProgramOptions& options, const Material& m)
         for (int i = 1; i <= 200; ++i) Phis.push_back(rcp * (1.0 - 0.1 * std::pow(1e-2, i / 200.0)));
         for (double Phi : Phis) {
             const ClosureValues v = evaluate_closures(m, Phi, x, 1e-4);
-            curves.row({x, Phi, v.g, v.p_k, v.p_y, v.p, v.eta, std::sqrt(v.c2)});
+            curves.row({{"phi_hat", x}, {"Phi", Phi}, {"g", v.g}, {"p_k", v.p_k}, {"p_y", v.p_y}, {"p", v.p},
+                         {"eta", v.eta}, {"c", std::sqrt(v.c2)}});
         }
         curves.blank();
         curves.blank();
     }
     verify::write_data(options, "closures_vs_Phi.dat", curves);
 
-    DataTable points({"phi_hat", "Phi_rcp", "Phi_co"});
+    DataTable points;
     for (const auto& c : m.packing.table().comments) points.comment(c);
     for (std::size_t i = 0; i < m.packing.table().phi_hat.size(); ++i)
-        points.row({m.packing.table().phi_hat[i], m.packing.table().Phi_rcp[i], m.packing.table().Phi_co[i]});
+        points.row({{"phi_hat", m.packing.table().phi_hat[i]}, {"Phi_rcp", m.packing.table().Phi_rcp[i]},
+                     {"Phi_co", m.packing.table().Phi_co[i]}});
     verify::write_data(options, "packing_table.dat", points);
 
-    DataTable fit({"phi_hat", "Phi_rcp", "Phi_co"});
+    DataTable fit;
     fit.comment("degree-" + std::to_string(m.packing.degree()) + " least-squares fits of packing_table.dat");
-    for (int i = 0; i <= 200; ++i) fit.row({i / 200.0, m.packing.Phi_rcp(i / 200.0), m.packing.Phi_co(i / 200.0)});
+    for (int i = 0; i <= 200; ++i) fit.row({{"phi_hat", i / 200.0}, {"Phi_rcp", m.packing.Phi_rcp(i / 200.0)},
+                                             {"Phi_co", m.packing.Phi_co(i / 200.0)}});
     verify::write_data(options, "packing_fit.dat", fit);
 }
 

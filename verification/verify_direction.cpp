@@ -111,7 +111,7 @@ void check_shear_plus_extension(CheckTable& t, const verify::ProgramOptions& opt
     const double gamma = 2.385;
     double worst = 0;
     long not_ok = 0;
-    DataTable tilt({"e_over_gamma", "tilt_deg", "tilt_exact_deg"});
+    DataTable tilt;
     tilt.comment("shear gamma e_x e_z^T plus planar extension e (e_x e_x^T - e_z e_z^T), u = e_x; tilt of d_s from e_z");
     for (int i = -60; i <= 60; ++i) {
         const double e = gamma * i / 20.0;
@@ -123,7 +123,8 @@ void check_shear_plus_extension(CheckTable& t, const verify::ProgramOptions& opt
         worst = std::max(worst, direction_error(r.d_s, expected));
         not_ok += r.status != DirectionStatus::ok;
         const double tilt_deg = std::acos(std::min(1.0, std::fabs(r.d_s.dot(e_z)))) * 180 / M_PI;
-        tilt.row({e / gamma, tilt_deg, std::fabs(90 - angle * 180 / M_PI)});
+        tilt.row({{"e_over_gamma", e / gamma}, {"tilt_deg", tilt_deg},
+                   {"tilt_exact_deg", std::fabs(90 - angle * 180 / M_PI)}});
     }
     verify::write_data(options, "direction_tilt.dat", tilt);
     t.at_most("shear + extension, e/gamma in [-3, 3]: max |d_s -/+ exact|", worst, kDirectionTol);

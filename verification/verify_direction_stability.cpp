@@ -158,7 +158,7 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
     const DirectionOptions defaults;
     DirectionOptions direct;
     direct.method = EigenMethod::closed_form;
-    DataTable curve({"relative_gap", "err_iterative", "err_closed_form", "bound"});
+    DataTable curve;
     curve.comment("max over 400 random Q (both mirror cases) of |d_s -/+ exact|; bound = " +
                   verify::format(kStabilityConstant) + " eps/g");
     double worst_ratio = 0, worst_ratio_direct = 0;
@@ -187,7 +187,8 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
         fit.add(std::log(g), std::log(err_cf));
         worst_ratio = std::max(worst_ratio, err_it * g / DBL_EPSILON);
         worst_ratio_direct = std::max(worst_ratio_direct, err_cf * g / DBL_EPSILON);
-        curve.row({g, err_it, err_cf, kStabilityConstant * DBL_EPSILON / g});
+        curve.row({{"relative_gap", g}, {"err_iterative", err_it}, {"err_closed_form", err_cf},
+                    {"bound", kStabilityConstant * DBL_EPSILON / g}});
     }
     verify::write_data(options, "direction_stability.dat", curve);
     t.note("eigen solvers: near a repeated extreme eigenvalue, relative gap g = 1e-1 .. 1e-15");

@@ -90,10 +90,10 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     // 1. Critical angle against atan(mu).
     const int sizes[] = {16, 32, 64};
     double crit[3];
-    DataTable angles({"nz", "theta_c_deg", "atan_mu_deg"});
+    DataTable angles;
     for (int i = 0; i < 3; ++i) {
         crit[i] = verify::critical_angle(m, settings, sizes[i]);
-        angles.row({static_cast<double>(sizes[i]), crit[i], theta_mu});
+        angles.row({{"nz", static_cast<double>(sizes[i])}, {"theta_c_deg", crit[i]}, {"atan_mu_deg", theta_mu}});
         table.note(verify::mode_tag(mode) + "nz = " + std::to_string(sizes[i]) + ": critical angle " + verify::format(crit[i]) + " deg");
     }
     for (int i = 1; i < 3; ++i)
@@ -104,14 +104,15 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     const double T_floor = FlowSettings{}.T_floor, theta = 18.0;
     const double creep = std::tan(theta * M_PI / 180.0) * std::sqrt(T_floor) / m.eta0;  // gamma_dot at the floor
     double creep_error[2];
-    DataTable below({"nz", "z", "u_x", "u_creep_law", "T"});
+    DataTable below;
     for (int i = 0; i < 2; ++i) {
         const int nz = 40 << i;
         const verify::InclineRun r = run(theta, nz, kInclineWindow[1]);
         const verify::InclineRun start = run(theta, nz, 0.0);
         double worst = 0.0;
         for (int k = 0; k < nz; ++k) {
-            below.row({static_cast<double>(nz), r.z[k], r.u[k], in_bed(m, r.Phi[k]) ? creep * r.z[k] : 0.0, r.T[k]});
+            below.row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"u_x", r.u[k]},
+                        {"u_creep_law", in_bed(m, r.Phi[k]) ? creep * r.z[k] : 0.0}, {"T", r.T[k]}});
             if (in_bed(m, r.Phi[k])) worst = std::max(worst, std::fabs(r.u[k] - creep * r.z[k]) / (creep * kInclineDepth));
         }
         below.blank();
@@ -129,7 +130,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     table.at_least(verify::mode_tag(mode) + "26 deg: kinetic energy at 1.5 s / at 0.5 s (growth)", fast.kinetic[1] / fast.kinetic[0], 1.0);
 
     // 4. At the critical angle: the profiles against the boundary-value solution.
-    DataTable profiles({"nz", "z", "Phi", "Phi_bvp", "u_x", "u_bvp", "T", "T_bvp"});
+    DataTable profiles;
     double spread[2], u_errors[2], Phi_errors[2];
     for (int i = 1; i < 3; ++i) {
         const int nz = sizes[i];

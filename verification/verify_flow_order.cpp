@@ -44,7 +44,7 @@ constexpr int kSizes[] = {16, 32, 64, 128};
 /// sources on the grid of kSizes[i] (the same for both modes).
 void check_mode(CheckTable& table, const verify::ProgramOptions& options, TimeStepping mode,
                 const std::vector<verify::ManufacturedFlow>& flows) {
-    DataTable data({"n", "h", "error_Phi", "error_u", "error_T"});
+    DataTable data;
     std::vector<verify::ManufacturedRun> errors;
     for (std::size_t g = 0; g < flows.size(); ++g) {
         const int n = kSizes[g];
@@ -59,7 +59,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, TimeSt
             return;
         }
         const verify::ManufacturedRun& e = errors.back();
-        data.row({static_cast<double>(n), verify::kManufacturedSide / n, e.error_Phi, e.error_u, e.error_T});
+        data.row({{"n", static_cast<double>(n)}, {"h", verify::kManufacturedSide / n}, {"error_Phi", e.error_Phi},
+                   {"error_u", e.error_u}, {"error_T", e.error_T}});
         table.note(verify::mode_tag(mode) + "n = " + std::to_string(n) + ": mean |error| Phi " + verify::format(e.error_Phi) + ", |u| " +
                    verify::format(e.error_u) + " m/s, T " + verify::format(e.error_T) + " m^2/s^2");
     }

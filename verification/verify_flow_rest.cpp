@@ -115,7 +115,7 @@ Run settle(const Material& m, TimeStepping mode, int nx, const std::vector<doubl
     while (solver.time() < t_end) {
         solver.step(t_end);
         if (history && solver.time() >= next) {
-            history->row({solver.time(), verify::max_momentum(solver)});
+            history->row({{"t", solver.time()}, {"max_momentum", verify::max_momentum(solver)}});
             next += 0.05;
         }
     }
@@ -143,7 +143,7 @@ double profile_error(const Material& m, const Run& r, DataTable& profiles, int n
     const std::vector<double> ref = verify::lithostatic_profile(m, kTFloor, m.packing.Phi_rcp(x), m.packing.Phi_co(x),
                                                                 kGravity, mass, r.z, &surface);
     for (std::size_t k = 0; k < r.z.size(); ++k) {
-        profiles.row({static_cast<double>(nz), r.z[k], r.Phi[k], ref[k]});
+        profiles.row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"Phi", r.Phi[k]}, {"Phi_reference", ref[k]}});
         if (r.z[k] + 1.5 * h < surface) worst = std::max(worst, std::fabs(r.Phi[k] - ref[k]));
     }
     profiles.blank();
@@ -156,8 +156,8 @@ double mass_bound(double steps) { return steps * DBL_EPSILON; }
 
 /// Every check of this program in one time-stepping mode.
 void check_mode(CheckTable& table, const verify::ProgramOptions& options, const Material& m, TimeStepping mode) {
-    DataTable history({"t", "max_momentum"});
-    DataTable profiles({"nz", "z", "Phi", "Phi_reference"});
+    DataTable history;
+    DataTable profiles;
     std::vector<double> errors, column30;
     const int sizes[] = {15, 30, 60};
     const double Phi_co = m.packing.Phi_co(FlowSettings{}.phi_hat);

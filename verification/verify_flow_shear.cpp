@@ -67,7 +67,8 @@ Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, do
         const double T = solver.T()[k], z = g.center(2, k);
         T_min = std::min(T_min, T), T_max = std::max(T_max, T);
         r.linear_error = std::max(r.linear_error, std::fabs(solver.u(0)[k] - gamma_dot * (z - 0.5 * kHeight)) / U);
-        profiles.row({gamma_dot, Phi, z, solver.u(0)[k], T, evaluate_closures_at(m, solver.Phi()[k], T, rcp, co).p});
+        profiles.row({{"gamma_dot", gamma_dot}, {"Phi", Phi}, {"z", z}, {"u_x", solver.u(0)[k]}, {"T", T},
+                       {"p", evaluate_closures_at(m, solver.Phi()[k], T, rcp, co).p}});
     }
     profiles.blank();
     profiles.blank();
@@ -84,8 +85,8 @@ Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, do
 void check_mode(CheckTable& table, const verify::ProgramOptions& options, const Material& m, TimeStepping mode) {
     const double co = m.packing.Phi_co(FlowSettings{}.phi_hat);
     const double mu = std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0);
-    DataTable profiles({"gamma_dot", "Phi", "z", "u_x", "T", "p"});
-    DataTable scan({"gamma_dot", "T", "T_eq45", "tau_over_p", "p_k"});
+    DataTable profiles;
+    DataTable scan;
 
     // The yield-regime runs start with T at its floor. In the kinetic regime eta ~ sqrt(T) vanishes
     // with T, and a shear layer grown from the wall out of T_floor takes minutes; that run starts
@@ -110,7 +111,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         table.at_most(tag + "(T_max - T_min)/T_max", r.T_spread, kSteadyTol);
         table.at_most(tag + "max |u - gamma_dot (z - H/2)|/U", r.linear_error, kSteadyTol);
         if (c.regime == std::string("yield")) {
-            scan.row({c.gamma_dot, r.T, T_eq, r.tau_over_p, r.p_k});
+            scan.row({{"gamma_dot", c.gamma_dot}, {"T", r.T}, {"T_eq45", T_eq}, {"tau_over_p", r.tau_over_p},
+                       {"p_k", r.p_k}});
             lx[n] = std::log(c.gamma_dot), ly[n] = std::log(r.p_k), ++n;
         }
     }

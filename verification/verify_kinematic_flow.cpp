@@ -227,7 +227,7 @@ void check_direction(CheckTable& t, const RollingDrumFlow& flow, const RollingDr
     std::vector<double> angles;
     double central = 0, streamline = 0;
     long not_ok = 0;
-    DataTable cells({"x", "z", "in_layer", "ux", "uz", "urel_x", "urel_z", "ds_x", "ds_z", "speed", "angle_deg"});
+    DataTable cells;
     cells.comment("bed cells of the kinematic drum (inertial frame, m and m/s); d_s signed upwards; angle: d_s vs surface normal");
     for_each_bed_cell(g, [&](const BedCell& b) {
         const std::size_t c = b.c;
@@ -235,7 +235,9 @@ void check_direction(CheckTable& t, const RollingDrumFlow& flow, const RollingDr
         const SegregationDirection r = segregation_direction(cell_tensor(f.grad_rel, c), u_rel);
         const Vector3d d_s = r.d_s(2) < 0 ? Vector3d(-r.d_s) : r.d_s;
         const double angle = r.segregates() ? degrees(d_s.dot(flow.normal())) : 0.0;
-        cells.row({b.x, b.z, double(f.in_layer[c]), u(0), u(2), u_rel(0), u_rel(2), d_s(0), d_s(2), u.norm(), angle});
+        cells.row({{"x", b.x}, {"z", b.z}, {"in_layer", double(f.in_layer[c])}, {"ux", u(0)}, {"uz", u(2)},
+                    {"urel_x", u_rel(0)}, {"urel_z", u_rel(2)}, {"ds_x", d_s(0)}, {"ds_z", d_s(2)},
+                    {"speed", u.norm()}, {"angle_deg", angle}});
         if (!f.in_layer[c]) return;
         not_ok += r.status != DirectionStatus::ok;
         angles.push_back(angle);

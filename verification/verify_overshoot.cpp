@@ -56,13 +56,6 @@ constexpr double kInterfaceConstant = 1.0;
 const std::vector<int> kCells = {50, 100, 200, 400, 800, 1600, 3200};
 const std::vector<SegregationScheme> kSchemes = SegregationScheme::all();
 
-/// A scheme's name as a data-file column ("modified_godunov").
-std::string column_name(SegregationScheme s) {
-    std::string name = scheme_name(s);
-    std::replace(name.begin(), name.end(), '-', '_');
-    return name;
-}
-
 double Phi_fig6(double z) { return 0.62 - 0.08 * std::pow(std::cos(M_PI * z), 2); }
 double T_fig6(double z) { return 0.2 + 0.8 * z; }
 
@@ -92,20 +85,18 @@ void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& eve
     t.note("max over the run of phi - Phi, t = 0.75 (classic: interface Phi, T exact at the faces;");
     t.note("bounded rows: the larger of it and the round-off clip if there was one, assumption G5):");
     std::string header = "      N";
-    std::vector<std::string> columns = {"N"};
     for (SegregationScheme s : kSchemes) {
         char cell[40];
         std::snprintf(cell, sizeof cell, "  %19s", scheme_name(s).c_str());
         header += cell;
-        columns.push_back(column_name(s));
     }
     t.note(header);
-    DataTable table(columns);
+    DataTable table;
     std::vector<std::vector<double>> excess(kSchemes.size());
     for (int N : kCells) {
         const Column column = make_column(fig6_setup(N));
         const auto phi0 = column_profile(column, [](double z) { return 0.5 * Phi_fig6(z); });
-        std::vector<double> row = {static_cast<double>(N)};
+        TableRow row{{"N", static_cast<double>(N)}};
         char line[160];
         std::string text;
         for (std::size_t s = 0; s < kSchemes.size(); ++s) {
@@ -115,7 +106,7 @@ void check_overshoot(CheckTable& t, const ProgramOptions& options, EveryRun& eve
             // excess the scheme itself produced).
             const double e = run.correction > 0.0 ? std::max(run.max_excess, run.correction) : run.max_excess;
             excess[s].push_back(e);
-            row.push_back(e);
+            row.add(scheme_column(kSchemes[s]), e);
             std::snprintf(line, sizeof line, "  %19.4e", e);
             text += line;
         }
@@ -153,13 +144,11 @@ void write_profiles(const ProgramOptions& options, EveryRun& every) {
         every.add(run, preserves_bounds(s));
         phi.push_back(run.phi);
     }
-    std::vector<std::string> columns = {"z", "Phi", "T", "phi0"};
-    for (SegregationScheme s : kSchemes) columns.push_back(column_name(s));
-    DataTable table(columns);
+    DataTable table;
     table.comment("Fig. 6 set-up, N = 50, t = 0.75, cfl = 0.9 (docs/assumptions.md G4)");
     for (std::size_t k = 0; k < phi0.size(); ++k) {
-        std::vector<double> row = {column.z[k], column.fields.Phi[k], column.T[k], phi0[k]};
-        for (const auto& p : phi) row.push_back(p[k]);
+        TableRow row{{"z", column.z[k]}, {"Phi", column.fields.Phi[k]}, {"T", column.T[k]}, {"phi0", phi0[k]}};
+        for (std::size_t s = 0; s < kSchemes.size(); ++s) row.add(scheme_column(kSchemes[s]), phi[s][k]);
         table.row(row);
     }
     write_data(options, "fig6_profiles.dat", table);

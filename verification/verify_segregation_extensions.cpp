@@ -131,8 +131,9 @@ void check_second_order(CheckTable& t, DataTable& table, Totals& totals) {
     print_series(t, cells, first, second);
     t.count("smooth: N where 2nd order at N is not better than 1st at 2N", not_cheaper(first, second), 0);
     for (std::size_t i = 0; i < cells.size(); ++i)
-        table.row({0, static_cast<double>(cells[i]), first.error[i], static_cast<double>(first.updates[i]),
-                   second.error[i], static_cast<double>(second.updates[i])});
+        table.row({{"problem", 0}, {"N", static_cast<double>(cells[i])}, {"L1_first", first.error[i]},
+                    {"updates_first", static_cast<double>(first.updates[i])}, {"L1_second", second.error[i]},
+                    {"updates_second", static_cast<double>(second.updates[i])}});
 
     const std::vector<int> batch = {200, 400, 800, 1600};
     const auto graded = [](double t) {
@@ -154,10 +155,12 @@ void check_second_order(CheckTable& t, DataTable& table, Totals& totals) {
     t.note("two-shock batch, psi0 = 0.4, t = 0.6 (reported only: shocks are O(h) for both orders):");
     print_series(t, batch, s1, s2);
     for (std::size_t i = 0; i < batch.size(); ++i) {
-        table.row({1, static_cast<double>(batch[i]), g1.error[i], static_cast<double>(g1.updates[i]), g2.error[i],
-                   static_cast<double>(g2.updates[i])});
-        table.row({2, static_cast<double>(batch[i]), s1.error[i], static_cast<double>(s1.updates[i]), s2.error[i],
-                   static_cast<double>(s2.updates[i])});
+        table.row({{"problem", 1}, {"N", static_cast<double>(batch[i])}, {"L1_first", g1.error[i]},
+                    {"updates_first", static_cast<double>(g1.updates[i])}, {"L1_second", g2.error[i]},
+                    {"updates_second", static_cast<double>(g2.updates[i])}});
+        table.row({{"problem", 2}, {"N", static_cast<double>(batch[i])}, {"L1_first", s1.error[i]},
+                    {"updates_first", static_cast<double>(s1.updates[i])}, {"L1_second", s2.error[i]},
+                    {"updates_second", static_cast<double>(s2.updates[i])}});
     }
 }
 
@@ -173,16 +176,18 @@ void check_remixing(CheckTable& t, const ProgramOptions& options, DataTable& tab
     t.at_least("remixing: modified-godunov, fitted order", fitted_order(cells, first.error), kRemixOrderFirst);
     t.at_least("remixing: modified-godunov-2, fitted order", fitted_order(cells, second.error), kRemixOrderSecond);
     for (std::size_t i = 0; i < cells.size(); ++i)
-        table.row({3, static_cast<double>(cells[i]), first.error[i], static_cast<double>(first.updates[i]),
-                   second.error[i], static_cast<double>(second.updates[i])});
+        table.row({{"problem", 3}, {"N", static_cast<double>(cells[i])}, {"L1_first", first.error[i]},
+                    {"updates_first", static_cast<double>(first.updates[i])}, {"L1_second", second.error[i]},
+                    {"updates_second", static_cast<double>(second.updates[i])}});
 
-    DataTable profiles({"z", "exact", "modified_godunov", "modified_godunov_2"});
+    DataTable profiles;
     profiles.comment("remixing steady state, P = 10, psi0 = 0.3, Phi = 0.6, N = 50, t = 5");
     const Column column = make_column(constant_column(50, D));
     const ColumnRun r1 = run_column(column, uniform(50), scheme_options(kOrders[0]), kRemixEnd);
     const ColumnRun r2 = run_column(column, uniform(50), scheme_options(kOrders[1]), kRemixEnd);
     const std::vector<double> exact = logistic(50);
-    for (int k = 0; k < 50; ++k) profiles.row({column.z[k], exact[k], r1.phi[k], r2.phi[k]});
+    for (int k = 0; k < 50; ++k) profiles.row({{"z", column.z[k]}, {"exact", exact[k]},
+                                                {"modified_godunov", r1.phi[k]}, {"modified_godunov_2", r2.phi[k]}});
     write_data(options, "remixing_profiles.dat", profiles);
 }
 
@@ -192,7 +197,7 @@ int main(int argc, char** argv) {
     const ProgramOptions options = parse_program_options(argc, argv);
     CheckTable t("Beyond the paper: second-order modified scheme and diffusive remixing");
     Totals totals;
-    DataTable table({"problem", "N", "L1_first", "updates_first", "L1_second", "updates_second"});
+    DataTable table;
     table.comment("problem 0: smooth periodic, 1: graded batch, 2: two-shock batch, 3: remixing steady state");
     check_second_order(t, table, totals);
     check_remixing(t, options, table, totals);

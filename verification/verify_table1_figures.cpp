@@ -55,7 +55,7 @@ void check_figure3(CheckTable& t, const ProgramOptions& options) {
     t.at_most("Fig. 3: |DF r_0| (lambda_0 = 0, eq. 56), finite differences", worst_r0, kDifferenceTol);
     t.at_most("Fig. 3: |DF r_1 - lambda_1 r_1| (eq. 55), finite differences", worst_r1, kDifferenceTol);
 
-    DataTable curves({"phi", "Phi", "f"});
+    DataTable curves;
     curves.comment("Fig. 3: block 0 the standing-wave curve f = f(Q*) through Q* = (0.25, 0.5) (left branch, then");
     curves.comment("right branch); block 1 the wave curve Phi = Phi*; blocks 2.. curves f = const, S = T = 1");
     double worst_f = 0.0, worst_slope = 0.0;
@@ -64,7 +64,7 @@ void check_figure3(CheckTable& t, const ProgramOptions& options) {
             const double Phi = side == 0 ? 1.0 - 0.5 * k / 500.0 : Phi_star + 0.5 * k / 500.0;
             const double phi = side == 0 ? phi_left_of_gamma(f_star, Phi, a) : phi_right_of_gamma(f_star, Phi, a);
             worst_f = std::max(worst_f, std::fabs(segregation_flux(phi, Phi, a) - f_star));
-            curves.row({phi, Phi, f_star});
+            curves.row({{"phi", phi}, {"Phi", Phi}, {"f", f_star}});
         }
     for (double Phi : {0.6, 0.7, 0.8, 0.9, 0.99}) {
         const double d = 1e-5;
@@ -77,17 +77,17 @@ void check_figure3(CheckTable& t, const ProgramOptions& options) {
     t.at_most("Fig. 3: |f - f(Q*)| on the computed standing-wave curve", worst_f, kRoundOff);
     t.at_most("Fig. 3: |slope of that curve - r_0 slope|", worst_slope, kSlopeTol);
     curves.blank(), curves.blank();
-    curves.row({0.0, Phi_star, 0.0}), curves.row({Phi_star, Phi_star, 0.0});
+    curves.row({{"phi", 0.0}, {"Phi", Phi_star}, {"f", 0.0}}), curves.row({{"phi", Phi_star}, {"Phi", Phi_star}, {"f", 0.0}});
     for (double F : {-0.025, -0.05, -0.075, -0.1, -0.15, -0.2}) {
         curves.blank(), curves.blank();
         for (int k = 0; k <= 200; ++k) {
             const double Phi = -4 * F / a + (1.0 + 4 * F / a) * k / 200.0;  // from Gamma (f_min = F) to Phi = 1
-            curves.row({phi_left_of_gamma(F, Phi, a), Phi, F});
+            curves.row({{"phi", phi_left_of_gamma(F, Phi, a)}, {"Phi", Phi}, {"f", F}});
         }
         curves.blank(), curves.blank();
         for (int k = 0; k <= 200; ++k) {
             const double Phi = -4 * F / a + (1.0 + 4 * F / a) * k / 200.0;
-            curves.row({phi_right_of_gamma(F, Phi, a), Phi, F});
+            curves.row({{"phi", phi_right_of_gamma(F, Phi, a)}, {"Phi", Phi}, {"f", F}});
         }
     }
     write_data(options, "fig3_curves.dat", curves);
@@ -123,10 +123,11 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
             wrong, 0);
     t.at_most(name + ": |exact flux - eq. (63)| on the grid", worst, kRoundOff);
 
-    DataTable regions({"phi_R", "Phi_R", "case"});
+    DataTable regions;
     regions.comment(name + ": Q_L = (" + std::to_string(L.phi) + ", " + std::to_string(L.Phi) + "), S = T = 1; case 0: phi > Phi");
     for (int j = 0; j < kGrid; ++j) {
-        for (int i = 0; i < kGrid; ++i) regions.row({phi_at(i), phi_at(j), static_cast<double>(cell[j * kGrid + i])});
+        for (int i = 0; i < kGrid; ++i) regions.row({{"phi_R", phi_at(i)}, {"Phi_R", phi_at(j)},
+                                                      {"case", static_cast<double>(cell[j * kGrid + i])}});
         regions.blank();
     }
     write_data(options, name + "_regions.dat", regions);
@@ -147,12 +148,13 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
         for (int n : {k - 1, k + 1, k - kGrid, k + kGrid})
             if (n >= 0 && n < kGrid * kGrid && depth[n] < 0) depth[n] = depth[k] + 1, queue.push_back(n);
     }
-    DataTable labels({"phi_R", "Phi_R", "case"});
+    DataTable labels;
     for (int c = first_case; c <= last_case; ++c) {
         int best = -1;
         for (int k = 0; k < kGrid * kGrid; ++k)
             if (cell[k] == c && (best < 0 || depth[k] > depth[best])) best = k;
-        if (best >= 0) labels.row({phi_at(best % kGrid), phi_at(best / kGrid), static_cast<double>(c)});
+        if (best >= 0) labels.row({{"phi_R", phi_at(best % kGrid)}, {"Phi_R", phi_at(best / kGrid)},
+                                    {"case", static_cast<double>(c)}});
     }
     write_data(options, name + "_labels.dat", labels);
 }
@@ -171,43 +173,44 @@ void check_figure5(CheckTable& t, const ProgramOptions& options) {
             0);
 
     const double phi_check = s.phi_plus;  // Q-check_R: the right end of the standing wave
-    DataTable states({"phi", "Phi", "f"});
+    DataTable states;
     states.comment("Fig. 5 states: Q_L, Q* = (Phi_L/2, Phi_L), Q-check_R (right end of the standing wave), Q_R");
     for (const FluxSide& q : {L, FluxSide{0.5 * L.Phi, L.Phi, 1.0}, FluxSide{phi_check, R.Phi, 1.0}, R})
-        states.row({q.phi, q.Phi, flux_of(q)});
+        states.row({{"phi", q.phi}, {"Phi", q.Phi}, {"f", flux_of(q)}});
     write_data(options, "fig5_states.dat", states);
 
-    DataTable path({"phi", "Phi", "f"});
+    DataTable path;
     path.comment("Fig. 5 wave path: block 0 rarefaction (Phi = Phi_L), block 1 standing wave (f = F), block 2 shock (Phi = Phi_R)");
     for (int k = 0; k <= 50; ++k) {
         const double phi = L.phi + (0.5 * L.Phi - L.phi) * k / 50.0;
-        path.row({phi, L.Phi, segregation_flux(phi, L.Phi, 1.0)});
+        path.row({{"phi", phi}, {"Phi", L.Phi}, {"f", segregation_flux(phi, L.Phi, 1.0)}});
     }
     path.blank(), path.blank();
     for (int k = 0; k <= 100; ++k) {
         const double Phi = L.Phi + (R.Phi - L.Phi) * k / 100.0;
-        path.row({phi_right_of_gamma(s.flux, Phi, 1.0), Phi, s.flux});
+        path.row({{"phi", phi_right_of_gamma(s.flux, Phi, 1.0)}, {"Phi", Phi}, {"f", s.flux}});
     }
     path.blank(), path.blank();
-    path.row({phi_check, R.Phi, s.flux}), path.row({R.phi, R.Phi, flux_of(R)});
+    path.row({{"phi", phi_check}, {"Phi", R.Phi}, {"f", s.flux}}), path.row({{"phi", R.phi}, {"Phi", R.Phi}, {"f", flux_of(R)}});
     write_data(options, "fig5_path.dat", path);
 
-    DataTable curves({"phi", "f_L", "f_R"});
+    DataTable curves;
     curves.comment("Fig. 5b: the flux curves f_L = f(.; Phi_L) on [0, Phi_L] and f_R on [0, Phi_R] (f_L = nan beyond Phi_L)");
     for (int k = 0; k <= 400; ++k) {
         const double phi = R.Phi * k / 400.0;
-        curves.row({phi, phi <= L.Phi ? segregation_flux(phi, L.Phi, 1.0) : NAN, segregation_flux(phi, R.Phi, 1.0)});
+        curves.row({{"phi", phi}, {"f_L", phi <= L.Phi ? segregation_flux(phi, L.Phi, 1.0) : NAN},
+                     {"f_R", segregation_flux(phi, R.Phi, 1.0)}});
     }
     write_data(options, "fig5_flux_curves.dat", curves);
 
-    DataTable profile({"xi", "phi", "Phi"});
+    DataTable profile;
     profile.comment("Fig. 5c: phi(xi) and Phi(xi), xi = z/t, with points on both sides of every wave speed");
     std::vector<double> xs;
     for (int k = 0; k <= 600; ++k) xs.push_back(-1.0 + 2.0 * k / 600.0);
     for (const Wave& w : s.waves)
         for (double c : {w.speed_left, w.speed_right}) xs.push_back(c - 1e-9), xs.push_back(c + 1e-9);
     std::sort(xs.begin(), xs.end());
-    for (double xi : xs) profile.row({xi, sample_phi(s, xi), sample_Phi(s, xi)});
+    for (double xi : xs) profile.row({{"xi", xi}, {"phi", sample_phi(s, xi)}, {"Phi", sample_Phi(s, xi)}});
     write_data(options, "fig5_profile.dat", profile);
 }
 

@@ -273,7 +273,7 @@ StressResult stress(long steps) {
 int main(int argc, char** argv) {
     const verify::FlowProgram program = verify::flow_program(argc, argv);
     CheckTable table("Transport of Phi and phi: donor cell and MUSCL-Hancock (+ FCT for phi) against exact solutions");
-    DataTable data({"part", "order", "smooth", "n", "error_Phi", "error_phi"});
+    DataTable data;
     const int sizes[] = {32, 64, 128};
     for (const Scheme scheme : {Scheme::donor_cell, Scheme::high_resolution}) {
         const double p = scheme == Scheme::donor_cell ? 1.0 : 2.0;
@@ -283,7 +283,8 @@ int main(int argc, char** argv) {
             for (int n : sizes) {
                 runs.push_back(rotate(n, scheme, Initial{smooth}));
                 const Errors& e = runs.back();
-                data.row({0.0, p, smooth ? 1.0 : 0.0, static_cast<double>(n), e.Phi, e.phi});
+                data.row({{"part", 0.0}, {"order", p}, {"smooth", smooth ? 1.0 : 0.0},
+                           {"n", static_cast<double>(n)}, {"error_Phi", e.Phi}, {"error_phi", e.phi}});
                 table.note(tag + "n = " + std::to_string(n) + ": L1 error Phi " + verify::format(e.Phi) + ", phi " +
                            verify::format(e.phi));
             }
@@ -315,7 +316,8 @@ int main(int argc, char** argv) {
         for (int q = 0; q < 3; ++q) {
             const int n = sizes[q] / 2;
             errors[q] = periodic_box(program.material, n, transport);
-            data.row({1.0, p, 1.0, static_cast<double>(n), errors[q], NAN});
+            data.row({{"part", 1.0}, {"order", p}, {"smooth", 1.0}, {"n", static_cast<double>(n)},
+                       {"error_Phi", errors[q]}, {"error_phi", NAN}});
             table.note(tag + "n = " + std::to_string(n) + ": L1 error of Phi " + verify::format(errors[q]));
         }
         table.note(tag + "order 16 -> 32: " + verify::format(std::log2(errors[0] / errors[1])));

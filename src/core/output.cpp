@@ -10,17 +10,36 @@
 
 namespace granseg {
 
-DataTable::DataTable(std::vector<std::string> columns) : columns_(std::move(columns)) {}
+TableRow::TableRow(std::initializer_list<Cell> cells) {
+    names_.reserve(cells.size()), values_.reserve(cells.size());
+    for (const Cell& c : cells) names_.emplace_back(c.name), values_.push_back(c.value);
+}
+
+TableRow& TableRow::add(std::string name, double value) {
+    names_.push_back(std::move(name)), values_.push_back(value);
+    return *this;
+}
+
+TableRow& TableRow::add(const TableRow& more) {
+    names_.insert(names_.end(), more.names_.begin(), more.names_.end());
+    values_.insert(values_.end(), more.values_.begin(), more.values_.end());
+    return *this;
+}
 
 void DataTable::comment(const std::string& text) { comments_.push_back(text); }
 
-void DataTable::row(const std::vector<double>& values) {
-    if (values.size() != columns_.size())
-        throw InputError("DataTable::row: " + std::to_string(values.size()) +
-                                    " values for " + std::to_string(columns_.size()) + " columns");
+void DataTable::row(const TableRow& r) {
+    if (rows_ == 0) columns_ = r.names();
+    if (r.names() != columns_) {
+        std::size_t i = 0;
+        while (i < r.size() && i < columns_.size() && r.names()[i] == columns_[i]) ++i;
+        throw InvariantError("DataTable::row: column " + std::to_string(i + 1) + " is named \"" +
+                             (i < r.size() ? r.names()[i] : "") + "\", the table's \"" +
+                             (i < columns_.size() ? columns_[i] : "") + "\"");
+    }
     char buf[32];
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        std::snprintf(buf, sizeof buf, "%.12g", values[i]);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        std::snprintf(buf, sizeof buf, "%.12g", r.values()[i]);
         body_ += (i ? " " : "") + std::string(buf);
     }
     body_ += '\n';

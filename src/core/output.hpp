@@ -6,20 +6,48 @@
 // early (bad input, broken invariant) leaves no output at all.
 #pragma once
 
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace granseg {
 
-/// A table of numbers with named columns, rendered as text for gnuplot.
+/// One row of a DataTable: its values in column order, each with the name of its column, so that
+/// a value cannot drift from its name:
+///     table.row({{"x", x}, {"z", z}});     or     TableRow r; r.add("t", t).add("steps", n);
+class TableRow {
+public:
+    /// A cell: a column's name and its value.
+    struct Cell {
+        std::string_view name;
+        double value;
+    };
+    TableRow() = default;
+    TableRow(std::initializer_list<Cell> cells);
+    /// Appends a column.
+    TableRow& add(std::string name, double value);
+    /// Appends the columns of `more` (a group of columns built elsewhere).
+    TableRow& add(const TableRow& more);
+    std::size_t size() const { return values_.size(); }
+    const std::vector<std::string>& names() const { return names_; }
+    const std::vector<double>& values() const { return values_; }
+
+private:
+    std::vector<std::string> names_;
+    std::vector<double> values_;
+};
+
+/// A table of numbers with named columns, rendered as text for gnuplot. Its first row names the
+/// columns; every later row must name the same columns in the same order.
 class DataTable {
 public:
-    explicit DataTable(std::vector<std::string> columns);
     /// Adds a "# text" line below the column line (provenance, parameters).
     void comment(const std::string& text);
-    /// Appends a row; throws InputError if its length differs from the columns.
-    void row(const std::vector<double>& values);
+    /// Appends a row; throws InvariantError, naming the column, if its names differ from the
+    /// first row's.
+    void row(const TableRow& values);
     /// Appends an empty line (gnuplot block separator, e.g. between curves or surface rows).
     void blank();
     std::size_t rows() const { return rows_; }

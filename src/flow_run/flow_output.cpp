@@ -42,7 +42,7 @@ double cell_pressure(const FlowSolver& s, std::size_t c) {
 
 DataTable flow_field_table(const FlowSolver& s, bool lab) {
     const Grid& g = s.grid();
-    DataTable table({"x", "z", "Phi", "u_x", "u_y", "u_z", "T", "p", "inside"});
+    DataTable table;
     table.comment(std::string(lab ? "lab" : "rotating") + " frame, t = " + format_number(s.time()) +
                   " s; slice j = 0; one block per row; units m, m/s, m^2/s^2");
     for (int k = 0; k < g.n[2]; ++k) {
@@ -55,8 +55,9 @@ DataTable flow_field_table(const FlowSolver& s, bool lab) {
                 const auto v = s.frame().to_lab_velocity(s.time(), x, z, ux, uz);
                 x = xz[0], z = xz[1], ux = in ? v[0] : 0.0, uz = in ? v[1] : 0.0;
             }
-            table.row({x, z, in ? s.Phi()[c] : 0.0, ux, s.u(1)[c], uz, in ? s.T()[c] : 0.0, cell_pressure(s, c),
-                       in ? 1.0 : 0.0});
+            table.row({{"x", x}, {"z", z}, {"Phi", in ? s.Phi()[c] : 0.0}, {"u_x", ux}, {"u_y", s.u(1)[c]},
+                        {"u_z", uz}, {"T", in ? s.T()[c] : 0.0}, {"p", cell_pressure(s, c)},
+                        {"inside", in ? 1.0 : 0.0}});
         }
         table.blank();
     }
@@ -65,11 +66,12 @@ DataTable flow_field_table(const FlowSolver& s, bool lab) {
 
 DataTable flow_column_table(const FlowSolver& s) {
     const Grid& g = s.grid();
-    DataTable table({"z", "Phi", "u_x", "u_z", "T", "p"});
+    DataTable table;
     table.comment("t = " + format_number(s.time()) + " s; units m, m/s, m^2/s^2");
     for (int k = 0; k < g.n[2]; ++k) {
         const std::size_t c = g.index(0, 0, k);
-        table.row({g.center(2, k), s.Phi()[c], s.u(0)[c], s.u(2)[c], s.T()[c], cell_pressure(s, c)});
+        table.row({{"z", g.center(2, k)}, {"Phi", s.Phi()[c]}, {"u_x", s.u(0)[c]}, {"u_z", s.u(2)[c]},
+                    {"T", s.T()[c]}, {"p", cell_pressure(s, c)}});
     }
     return table;
 }
@@ -108,27 +110,19 @@ std::string flow_vtk(const FlowSolver& s) {
     return out.str();
 }
 
-void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values) {
+void append_flow_work(const FlowSolver& solver, TableRow& work) {
     const FlowCounters& counts = solver.counters();
-    for (int b = 0; b < kStepBounds; ++b) {
-        columns.push_back(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)));
-        values.push_back(static_cast<double>(counts.set_by[b]));
-    }
-    for (const auto& [name, count] : {std::pair{"pressure_solves", counts.pressure_solves}, std::pair{"newton", counts.newton},
-                                      std::pair{"krylov", counts.krylov},
-                                      std::pair{"temperature_iterations", counts.temperature_iterations}}) {
-        columns.push_back(name);
-        values.push_back(static_cast<double>(count));
-    }
-    for (int k = 0; k < kFlowStages; ++k) {
-        columns.push_back(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
-        values.push_back(solver.timers().seconds[k]);
-    }
+    for (int b = 0; b < kStepBounds; ++b)
+        work.add(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)), static_cast<double>(counts.set_by[b]));
+    work.add({{"pressure_solves", static_cast<double>(counts.pressure_solves)}, {"newton", static_cast<double>(counts.newton)},
+              {"krylov", static_cast<double>(counts.krylov)},
+              {"temperature_iterations", static_cast<double>(counts.temperature_iterations)}});
+    for (int k = 0; k < kFlowStages; ++k)
+        work.add(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)), solver.timers().seconds[k]);
 }
 
-void append_run_time(const RunTime& cost, std::vector<std::string>& columns, std::vector<double>& values) {
-    for (const char* c : {"wall_seconds", "cpu_seconds", "threads"}) columns.push_back(c);
-    for (double v : {cost.wall, cost.cpu, static_cast<double>(cost.threads)}) values.push_back(v);
+void append_run_time(const RunTime& cost, TableRow& row) {
+    row.add({{"wall_seconds", cost.wall}, {"cpu_seconds", cost.cpu}, {"threads", static_cast<double>(cost.threads)}});
 }
 
 DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, double v_flow, const DrumShape* shape) {

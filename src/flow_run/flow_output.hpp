@@ -71,11 +71,11 @@ inline double flowing_layer_thickness(const DrumState& d, const DrumShape& shape
 /// (docs/flow_solver.md Sect. 2, step_size), the semi-implicit step's pressure_solves, newton and krylov
 /// iterations (0 in the explicit step), the temperature solves' conjugate-gradient iterations,
 /// and seconds_S, the wall-clock seconds of each stage S of the step (FlowStage).
-void append_flow_work(const FlowSolver& solver, std::vector<std::string>& columns, std::vector<double>& values);
+void append_flow_work(const FlowSolver& solver, TableRow& row);
 
 /// Appends a run's cost to a summary row: wall_seconds, cpu_seconds (every thread of the process:
 /// CPU over wall says how many cores the run kept busy) and threads (core/threads.hpp).
-void append_run_time(const RunTime& cost, std::vector<std::string>& columns, std::vector<double>& values);
+void append_run_time(const RunTime& cost, TableRow& row);
 
 /// Fits a line (total least squares) through the points where Phi crosses Phi_level between
 /// neighbouring inside cells within the window, and compares it with the horizontal

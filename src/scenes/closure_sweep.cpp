@@ -18,15 +18,16 @@ struct ClosureSweep : SceneJob {
     explicit ClosureSweep(Material m) : material(std::move(m)) {}
 
     OutputSet run() override {
-        DataTable table({"phi_hat", "Phi", "T", "Phi_rcp", "Phi_co", "g", "p_k", "p_y", "p", "eta",
-                         "lambda", "eps", "dissipation", "c"});
+        DataTable table;
         table.comment("closure-sweep: one block per phi_hat (gnuplot index); units m^2/s^2, m^2/s, 1/s, m/s");
         for (std::size_t a = 0; a < phi_hats.size(); ++a) {
             for (std::size_t b = 0; b < Phis.size(); ++b) {
                 const double t = T[a * Phis.size() + b];
                 const ClosureValues v = evaluate_closures(material, Phis[b], phi_hats[a], t);
-                table.row({phi_hats[a], Phis[b], t, v.Phi_rcp, v.Phi_co, v.g, v.p_k, v.p_y, v.p, v.eta,
-                           v.lambda, v.eps, v.dissipation, std::sqrt(v.c2)});
+                table.row({{"phi_hat", phi_hats[a]}, {"Phi", Phis[b]}, {"T", t}, {"Phi_rcp", v.Phi_rcp},
+                            {"Phi_co", v.Phi_co}, {"g", v.g}, {"p_k", v.p_k}, {"p_y", v.p_y}, {"p", v.p},
+                            {"eta", v.eta}, {"lambda", v.lambda}, {"eps", v.eps}, {"dissipation", v.dissipation},
+                            {"c", std::sqrt(v.c2)}});
             }
             table.blank();
             table.blank();

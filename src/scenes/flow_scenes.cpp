@@ -64,7 +64,7 @@ struct FlowJob : SceneJob {
         for (int a = 0; a < 3; ++a)
             for (int side = 0; side < 2; ++side) solver.set_wall_velocity(a, side, walls[a][side]);
         solver.set_state(Phi, u, T);
-        DataTable history({"t", "steps", "mass", "mass_change", "kinetic_energy", "max_speed", "T_mean", "dt"});
+        DataTable history;
         history.comment(label + ": mass = sum Phi dV (m^3 per m^(3-d)), mass_change relative to t = 0, kinetic energy sum Phi |u|^2/2 dV (rho* = 1)");
         const double mass0 = solver.mass();
         double next = 0.0;
@@ -75,8 +75,10 @@ struct FlowJob : SceneJob {
             double PhiT = 0.0, sum = 0.0;
             for (std::size_t c = 0; c < grid.cells(); ++c)
                 if (grid.is_inside(c)) PhiT += solver.Phi()[c] * solver.T()[c], sum += solver.Phi()[c];
-            history.row({solver.time(), static_cast<double>(solver.steps()), solver.mass(), solver.mass() / mass0 - 1.0, d.kinetic_energy, d.max_speed,
-                         sum > 0 ? PhiT / sum : 0.0, solver.last_dt()});
+            history.row({{"t", solver.time()}, {"steps", static_cast<double>(solver.steps())},
+                          {"mass", solver.mass()}, {"mass_change", solver.mass() / mass0 - 1.0},
+                          {"kinetic_energy", d.kinetic_energy}, {"max_speed", d.max_speed},
+                          {"T_mean", sum > 0 ? PhiT / sum : 0.0}, {"dt", solver.last_dt()}});
         };
         sample();
         advance_flow(solver, t_end, label, sample);

@@ -45,7 +45,7 @@ struct Segregation1d : SceneJob {
         check();
         progress.finish();
 
-        DataTable table({"z", "Phi", "T", "phi"});
+        DataTable table;
         table.comment("segregation1d: scheme " + scheme_name(options.scheme) + ", t = " + format_number(t_end) +
                       ", cfl = " + format_number(options.cfl) + ", " + std::to_string(steps) + " steps, " +
                       std::to_string(solver.cell_updates()) + " cell updates");
@@ -54,7 +54,7 @@ struct Segregation1d : SceneJob {
                       format_number(solver.largest_correction(), 3) + "; relative change of sum(phi): " +
                       format_number((total_amount(column.grid, phi) - mass0) / mass0, 3));
         for (std::size_t k = 0; k < phi.size(); ++k)
-            table.row({column.z[k], column.fields.Phi[k], column.T[k], phi[k]});
+            table.row({{"z", column.z[k]}, {"Phi", column.fields.Phi[k]}, {"T", column.T[k]}, {"phi", phi[k]}});
         OutputSet out;
         out.add("profile.dat", table);
         return out;

@@ -22,6 +22,83 @@ namespace {
 /// across the diameter (the smallest [drum] cells_per_diameter).
 constexpr double kMinInscribedCells = 8.0;
 
+/// The files of a tumbler-flow run as it goes: the history sampled every kDrumHistoryInterval, VTK
+/// snapshots, and at the end the summary and the fields.
+class FlowDrumRecord {
+public:
+    FlowDrumRecord(const FlowSolver& solver, const DrumSpec& drum, const DrumRun& run, double Phi_level)
+        : solver_(solver), drum_(drum), run_(run), shape_(drum.cross_section()), Phi_level_(Phi_level),
+          v_flow_(drum.flowing_speed()), mass0_(solver.mass()), angle_(run.angle_from), layer_(run.angle_from) {
+        history_.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level_) +
+                         " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8); flowing = |u| > " + format_number(v_flow_) +
+                         " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
+    }
+
+    /// Records what is due at the solver's time: a history row, a VTK snapshot.
+    void sample() {
+        if (due(next_history_)) record_history();
+        if (run_.vtk && due(next_snapshot_)) {
+            next_snapshot_ += run_.snapshot_every;
+            char name[64];
+            std::snprintf(name, sizeof name, "vtk/tumbler_%04d.vtk", snapshot_++);
+            out_.add(name, flow_vtk(solver_));
+        }
+    }
+
+    /// The files: snapshots, history.dat, summary.dat, fields_lab.dat, fields_drum.dat.
+    OutputSet finish(const RunTime& cost) {
+        out_.add("history.dat", history_);
+        out_.add("summary.dat", summary(cost));
+        out_.add("fields_lab.dat", flow_field_table(solver_, true));
+        out_.add("fields_drum.dat", flow_field_table(solver_, false));
+        return std::move(out_);
+    }
+
+private:
+    bool due(double next) const { return solver_.time() >= next - 1e-12 || solver_.time() >= run_.t_end; }
+
+    void record_history() {
+        next_history_ += kDrumHistoryInterval;
+        const FlowSolver& s = solver_;
+        const DrumState d = drum_state(s, Phi_level_, 0.8 * drum_.radius(), v_flow_, &shape_);
+        const double thickness = flowing_layer_thickness(d, shape_);
+        angle_.add(s.time(), d.surface_angle_deg);
+        layer_.add(s.time(), thickness);
+        history_.row({{"t", s.time()}, {"steps", static_cast<double>(s.steps())}, {"surface_angle_deg", d.surface_angle_deg},
+                      {"surface_points", static_cast<double>(d.surface_points)}, {"flowing_fraction", d.flowing_fraction},
+                      {"max_speed", d.max_speed}, {"kinetic_energy", d.kinetic_energy}, {"mass", s.mass()},
+                      {"mass_change", s.mass() / mass0_ - 1.0}, {"dt", s.last_dt()}, {"layer_thickness", thickness}});
+    }
+
+    DataTable summary(const RunTime& cost) const {
+        const FlowSolver& s = solver_;
+        TableRow values{{"t_end", s.time()}, {"steps", static_cast<double>(s.steps())}, {"angle_mean_deg", angle_.mean()},
+                        {"angle_std_deg", angle_.std_dev()}, {"samples", static_cast<double>(angle_.samples())},
+                        {"mass_change", s.mass() / mass0_ - 1.0}, {"layer_mean", layer_.mean()},
+                        {"layer_std", layer_.std_dev()}, {"inside_cells", static_cast<double>(s.grid().inside_cells())}};
+        append_flow_work(s, values);
+        append_run_time(cost, values);
+        DataTable summary;
+        summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
+                        format_number(run_.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
+                        "samples; mass_change relative; inside_cells: cells of the drum; steps_X: steps whose dt the bound X "
+                        "set (docs/flow_solver.md, stage step_size); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
+        summary.row(values);
+        return summary;
+    }
+
+    const FlowSolver& solver_;
+    const DrumSpec& drum_;
+    const DrumRun& run_;
+    const DrumShape shape_;
+    const double Phi_level_, v_flow_, mass0_;  // mass0_: before the first sample
+    TimeAverage angle_, layer_;                 // time averages from angle_from
+    DataTable history_;
+    OutputSet out_;
+    int snapshot_ = 0;
+    double next_history_ = 0.0, next_snapshot_ = 0.0;
+};
+
 struct TumblerFlow : SceneJob {
     Material material;
     FlowSettings settings;
@@ -31,63 +108,19 @@ struct TumblerFlow : SceneJob {
     explicit TumblerFlow(Material m) : material(std::move(m)) {}
 
     OutputSet run() override {
-        const Grid grid = drum.grid();
-        const DrumShape shape = drum.cross_section();
-        FlowSolver solver(grid, material, settings, drum.frame());
+        FlowSolver solver(drum.grid(), material, settings, drum.frame());
+        start_at_rest(solver);
+        FlowDrumRecord record(solver, drum, run_options, surface_level(material, settings.phi_hat));
+        record.sample();
+        const RunTime cost = advance_flow(solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); });
+        return record.finish(cost);
+    }
+
+    /// The bed at rest in the lithostatic balance, T at its floor, the drum at rest in its frame.
+    void start_at_rest(FlowSolver& solver) const {
+        const Grid& grid = solver.grid();
         const std::vector<double> zero(grid.cells(), 0.0), T(grid.cells(), settings.T_floor);
         solver.set_state(drum_bed_at_rest(drum, grid, material, settings.phi_hat, settings.T_floor), {zero, zero, zero}, T);
-
-        const double Phi_level = surface_level(material, settings.phi_hat), v_flow = drum.flowing_speed();
-        const double t_end = run_options.t_end;
-        DataTable history({"t", "steps", "surface_angle_deg", "surface_points", "flowing_fraction", "max_speed",
-                           "kinetic_energy", "mass", "mass_change", "dt", "layer_thickness"});
-        history.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level) +
-                        " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8); flowing = |u| > " + format_number(v_flow) +
-                        " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
-        OutputSet out;
-        TimeAverage angle(run_options.angle_from), layer(run_options.angle_from);  // time averages from angle_from
-        const double mass0 = solver.mass();  // before the first sample
-        int snapshot = 0;
-        double next_history = 0.0, next_snapshot = 0.0;
-        auto sample = [&] {
-            if (solver.time() >= next_history - 1e-12 || solver.time() >= t_end) {
-                next_history += kDrumHistoryInterval;
-                const DrumState d = drum_state(solver, Phi_level, 0.8 * drum.radius(), v_flow, &shape);
-                const double thickness = flowing_layer_thickness(d, shape);
-                angle.add(solver.time(), d.surface_angle_deg);
-                layer.add(solver.time(), thickness);
-                history.row({solver.time(), static_cast<double>(solver.steps()), d.surface_angle_deg,
-                             static_cast<double>(d.surface_points), d.flowing_fraction, d.max_speed, d.kinetic_energy,
-                             solver.mass(), solver.mass() / mass0 - 1.0, solver.last_dt(), thickness});
-            }
-            if (run_options.vtk && (solver.time() >= next_snapshot - 1e-12 || solver.time() >= t_end)) {
-                next_snapshot += run_options.snapshot_every;
-                char name[64];
-                std::snprintf(name, sizeof name, "vtk/tumbler_%04d.vtk", snapshot++);
-                out.add(name, flow_vtk(solver));
-            }
-        };
-        sample();
-        const RunTime cost = advance_flow(solver, t_end, "tumbler-flow", sample);
-
-        std::vector<std::string> columns{"t_end", "steps", "angle_mean_deg", "angle_std_deg", "samples", "mass_change",
-                                         "layer_mean", "layer_std", "inside_cells"};
-        std::vector<double> values{solver.time(), static_cast<double>(solver.steps()), angle.mean(), angle.std_dev(),
-                                   static_cast<double>(angle.samples()), solver.mass() / mass0 - 1.0, layer.mean(),
-                                   layer.std_dev(), static_cast<double>(grid.inside_cells())};
-        append_flow_work(solver, columns, values);
-        append_run_time(cost, columns, values);
-        DataTable summary(columns);
-        summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
-                        format_number(run_options.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
-                        "samples; mass_change relative; inside_cells: cells of the drum; steps_X: steps whose dt the bound X "
-                        "set (docs/flow_solver.md, stage step_size); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
-        summary.row(values);
-        out.add("history.dat", history);
-        out.add("summary.dat", summary);
-        out.add("fields_lab.dat", flow_field_table(solver, true));
-        out.add("fields_drum.dat", flow_field_table(solver, false));
-        return out;
     }
 };
 

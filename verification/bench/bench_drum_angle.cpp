@@ -106,8 +106,7 @@ int main(int argc, char** argv) {
     const double angle_from = base["run"]["angle_from"].value<double>().value();
     const double diameter = base["drum"]["diameter"].value<double>().value();
 
-    DataTable table({"cells", "semi_implicit", "dt_max", "h_mm", "steps", "wall_s", "angle_mean_deg", "angle_std_deg",
-                     "ke_min_over_mean", "ke_max_over_mean", "friction_deg", "layer_mm", "steps_halved"});
+    DataTable table;
     table.comment("tumbler-flow drum of " + std::string(kScene) + ", 25 s; angle and kinetic energy over t >= " +
                   verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s) per run, " + std::to_string(lanes) +
                   " run(s) side by side; load average at start " +
@@ -145,8 +144,11 @@ int main(int argc, char** argv) {
         const auto history = history_range(verify::read_rows(dir + "/history.dat"), angle_from);
         const bool is_explicit = std::string(r.mode) == "explicit";
         const double h_mm = 1e3 * diameter / r.cells;
-        table.row({double(r.cells), is_explicit ? 0.0 : 1.0, r.dt_max, h_mm, s[1], wall, s[2], s[3], history.ke_min,
-                   history.ke_max, friction, 1e3 * s[6], s[8 + static_cast<int>(StepBound::halved)]});
+        table.row({{"cells", double(r.cells)}, {"semi_implicit", is_explicit ? 0.0 : 1.0}, {"dt_max", r.dt_max},
+                    {"h_mm", h_mm}, {"steps", s[1]}, {"wall_s", wall}, {"angle_mean_deg", s[2]},
+                    {"angle_std_deg", s[3]}, {"ke_min_over_mean", history.ke_min},
+                    {"ke_max_over_mean", history.ke_max}, {"friction_deg", friction}, {"layer_mm", 1e3 * s[6]},
+                    {"steps_halved", s[8 + static_cast<int>(StepBound::halved)]}});
         checks.note(tag + ": " + verify::format(s[1]) + " steps, " + verify::format(wall) + " s wall; angle " +
                     verify::format(s[2]) + " +- " + verify::format(s[3]) + " deg (friction angle " + verify::format(friction) +
                     "); layer " + verify::format(1e3 * s[6]) + " mm; kinetic energy min/mean " + verify::format(history.ke_min) +
@@ -157,13 +159,14 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
     }
     // The gap between the modes at the resolutions both ran, and its power law C h^p.
-    DataTable gaps({"h_mm", "explicit_deg", "semi_implicit_deg", "gap_deg"});
+    DataTable gaps;
     std::vector<double> log_h, log_gap;
     for (std::size_t i = 0; i < h[0].size(); ++i)
         for (std::size_t j = 0; j < h[1].size(); ++j)
             if (h[0][i] == h[1][j]) {
                 const double gap = angle[0][i] - angle[1][j];
-                gaps.row({h[0][i], angle[0][i], angle[1][j], gap});
+                gaps.row({{"h_mm", h[0][i]}, {"explicit_deg", angle[0][i]}, {"semi_implicit_deg", angle[1][j]},
+                           {"gap_deg", gap}});
                 if (gap > 0.0) log_h.push_back(std::log(h[0][i])), log_gap.push_back(std::log(gap));
             }
     if (log_h.size() < 2) return checks.finish();  // no power law through fewer than two positive gaps

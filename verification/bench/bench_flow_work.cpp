@@ -82,9 +82,13 @@ void manufactured(const Material& m, DataTable& table) {
             }
             const double dt = verify::kManufacturedEnd / r.steps;
             const double cg = static_cast<double>(r.work.krylov) / r.steps;
-            table.row({0.0, static_cast<double>(v.mode == TimeStepping::semi_implicit), v.rule, static_cast<double>(n),
-                       static_cast<double>(r.steps), dt, cg, verify::median(cpu), verify::median(wall), r.error_Phi,
-                       r.error_u, r.error_T, 0.0, 0.0, 0.0});
+            table.row({{"problem", 0.0},
+                        {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
+                        {"dt_rule", v.rule}, {"n", static_cast<double>(n)}, {"steps", static_cast<double>(r.steps)},
+                        {"dt_mean", dt}, {"cg_per_step", cg}, {"cpu_seconds", verify::median(cpu)},
+                        {"wall_seconds", verify::median(wall)}, {"error_Phi", r.error_Phi}, {"error_u", r.error_u},
+                        {"error_T", r.error_T}, {"angle_cpu_seconds", 0.0}, {"angle_wall_seconds", 0.0},
+                        {"angle_error_deg", 0.0}});
             std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g\n", label(v, "s/m").c_str(), n,
                         r.steps, dt, cg, verify::median(cpu), verify::median(wall), r.error_Phi, r.error_u, r.error_T);
             std::fflush(stdout);
@@ -116,9 +120,13 @@ void incline(const Material& m, DataTable& table) {
             const verify::InclineProfileErrors e = verify::incline_profile_errors(m, r, theta_c);
             const double dt = kProfileTime / r.steps, angle_error = std::fabs(theta_c - theta_mu);
             const double cg = static_cast<double>(r.work.krylov) / r.steps;
-            table.row({1.0, static_cast<double>(v.mode == TimeStepping::semi_implicit), v.rule, static_cast<double>(nz),
-                       static_cast<double>(r.steps), dt, cg, verify::median(cpu), verify::median(wall), e.Phi, e.u,
-                       e.T_spread, angle_time.cpu, angle_time.wall, angle_error});
+            table.row({{"problem", 1.0},
+                        {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
+                        {"dt_rule", v.rule}, {"n", static_cast<double>(nz)}, {"steps", static_cast<double>(r.steps)},
+                        {"dt_mean", dt}, {"cg_per_step", cg}, {"cpu_seconds", verify::median(cpu)},
+                        {"wall_seconds", verify::median(wall)}, {"error_Phi", e.Phi}, {"error_u", e.u},
+                        {"error_T", e.T_spread}, {"angle_cpu_seconds", angle_time.cpu},
+                        {"angle_wall_seconds", angle_time.wall}, {"angle_error_deg", angle_error}});
             std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g\n",
                         label(v, "s").c_str(), nz, r.steps, dt, cg, verify::median(cpu), verify::median(wall), e.u, e.Phi,
                         e.T_spread, angle_time.cpu, angle_error);
@@ -134,9 +142,7 @@ void incline(const Material& m, DataTable& table) {
 int main(int argc, char** argv) {
     const auto [options, m] = verify::flow_program(argc, argv);  // one OpenMP thread
     const std::string load_before = verify::load_average();
-    DataTable table({"problem", "semi_implicit", "dt_rule", "n", "steps", "dt_mean", "cg_per_step", "cpu_seconds",
-                     "wall_seconds", "error_Phi", "error_u", "error_T", "angle_cpu_seconds", "angle_wall_seconds",
-                     "angle_error_deg"});
+    DataTable table;
     table.comment("problem 0 manufactured solution (n x n cells; errors: mean |error| of Phi, |u| in m/s, T in m^2/s^2 at "
                   "t_end), 1 inclined plane (nz cells; errors after 2 s at the solver's critical angle: max |Phi - Phi_bvp|, "
                   "max |u - u_bvp|/u_bvp(depth), relative spread of T; angle: |theta_c - atan(mu)| by bisection, its CPU "

@@ -138,7 +138,7 @@ double time_to_target(const std::vector<double>& error, const std::vector<double
 int main(int argc, char** argv) {
     const ProgramOptions options = parse_program_options(argc, argv);
     const std::string load_before = load_average();
-    DataTable table({"problem", "scheme", "N", "L1", "cpu_median", "cpu_min", "cpu_max", "updates", "Mupdates_per_s"});
+    DataTable table;
     table.comment("problem: 0 two-shock, 1 fig6, 2 graded; scheme: 0 modified-godunov, 1 modified-godunov-2, "
                   "2 classic-upwind, 3 classic-godunov; CPU seconds, median of " + std::to_string(kRepetitions) + " runs");
     table.comment("load average before: " + load_before);
@@ -167,8 +167,10 @@ int main(int argc, char** argv) {
                 errors.push_back(error);
                 medians.push_back(median);
                 if (problem.name == "fig6" && N >= kRateFromCells) markdown[s].fig6_rates.push_back(rate);
-                table.row({static_cast<double>(p), static_cast<double>(s), static_cast<double>(N), error, median,
-                           seconds.front(), seconds.back(), static_cast<double>(run.updates), rate});
+                table.row({{"problem", static_cast<double>(p)}, {"scheme", static_cast<double>(s)},
+                            {"N", static_cast<double>(N)}, {"L1", error}, {"cpu_median", median},
+                            {"cpu_min", seconds.front()}, {"cpu_max", seconds.back()},
+                            {"updates", static_cast<double>(run.updates)}, {"Mupdates_per_s", rate}});
                 std::printf("%-10s %-19s %6d %11.4e %11.4e %5.0f..%-5.0f%% %9.1f\n", problem.name.c_str(),
                             scheme_name(kSchemes[s]).c_str(), N, error, median, 100 * seconds.front() / median,
                             100 * seconds.back() / median, rate);

@@ -88,11 +88,7 @@ std::string explicit_scene(const std::string& path, const std::string& dir) {
 /// per cell and step, the solver's work per step and the shares of the step's stages (FlowStage);
 /// printed and written to bench_tumbler_modes.dat.
 void write_modes(const verify::ProgramOptions& options, const std::vector<std::pair<std::vector<double>, std::string>>& modes) {
-    std::vector<std::string> columns{"semi_implicit", "wall_median_s", "wall_min_s", "wall_max_s", "steps", "angle_mean_deg",
-                                     "angle_std_deg", "layer_mean_mm", "layer_std_mm", "ns_per_cell_step",
-                                     "solves_per_step", "newton_per_solve", "krylov_per_newton", "temperature_cg_per_step"};
-    for (int k = 0; k < kFlowStages; ++k) columns.push_back(std::string("share_") + flow_stage_name(static_cast<FlowStage>(k)));
-    DataTable table(columns);
+    DataTable table;
     table.comment("tumbler-flow, 100 cells per diameter, 25 s: 0 explicit, 1 semi-implicit; angle and flowing-layer "
                   "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from; ns per "
                   "cell and step from the median wall time; shares of the timed stages");
@@ -102,25 +98,30 @@ void write_modes(const verify::ProgramOptions& options, const std::vector<std::p
         const double steps = s.at("steps"), solves = std::max(1.0, s.at("pressure_solves"));
         double staged = 0.0;
         for (int k = 0; k < kFlowStages; ++k) staged += s.at(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
-        std::vector<double> row{static_cast<double>(m), verify::median(walls), *std::min_element(walls.begin(), walls.end()),
-                                *std::max_element(walls.begin(), walls.end()), steps, s.at("angle_mean_deg"),
-                                s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"),
-                                1e9 * verify::median(walls) / (steps * s.at("inside_cells")), s.at("pressure_solves") / steps,
-                                s.at("newton") / solves, s.at("krylov") / std::max(1.0, s.at("newton")),
-                                s.at("temperature_iterations") / steps};
+        const double ns = 1e9 * verify::median(walls) / (steps * s.at("inside_cells")), per_step = s.at("pressure_solves") / steps,
+                     newton = s.at("newton") / solves, krylov = s.at("krylov") / std::max(1.0, s.at("newton")),
+                     temperature = s.at("temperature_iterations") / steps;
+        TableRow row{{"semi_implicit", static_cast<double>(m)}, {"wall_median_s", verify::median(walls)},
+                     {"wall_min_s", *std::min_element(walls.begin(), walls.end())},
+                     {"wall_max_s", *std::max_element(walls.begin(), walls.end())}, {"steps", steps},
+                     {"angle_mean_deg", s.at("angle_mean_deg")}, {"angle_std_deg", s.at("angle_std_deg")},
+                     {"layer_mean_mm", 1e3 * s.at("layer_mean")}, {"layer_std_mm", 1e3 * s.at("layer_std")},
+                     {"ns_per_cell_step", ns}, {"solves_per_step", per_step}, {"newton_per_solve", newton},
+                     {"krylov_per_newton", krylov}, {"temperature_cg_per_step", temperature}};
         std::string shares;
         for (int k = 0; k < kFlowStages; ++k) {
             const std::string name = flow_stage_name(static_cast<FlowStage>(k));
-            row.push_back(s.at("seconds_" + name) / staged);
-            shares += " " + name + " " + verify::format(100.0 * row.back()) + "%";
+            const double share = s.at("seconds_" + name) / staged;
+            row.add("share_" + name, share);
+            shares += " " + name + " " + verify::format(100.0 * share) + "%";
         }
         table.row(row);
         std::printf("%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm, %.0f ns per cell "
                     "and step; per step %.2f solves, %.2f Newton per solve, %.2f CG per Newton, %.1f temperature CG; "
                     "shares:%s\n",
                     m == 0 ? "explicit" : "semi-implicit", verify::median(walls), steps, s.at("angle_mean_deg"),
-                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"), row[9], row[10], row[11],
-                    row[12], row[13], shares.c_str());
+                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"), ns, per_step, newton,
+                    krylov, temperature, shares.c_str());
     }
     std::printf("wall ratio explicit / semi-implicit (medians): %.2f\n",
                 verify::median(modes[0].first) / verify::median(modes[1].first));
@@ -135,14 +136,15 @@ int main(int argc, char** argv) {
     omp_set_num_threads(threads);
     const std::string dir = options.data_dir;
     std::vector<double> flow, flow_explicit, coupled;
-    DataTable times({"run", "flow_seconds", "coupled_seconds", "flow_explicit_seconds"});
+    DataTable times;
     const std::string explicit_flow = explicit_scene(kFlowScene, dir + "/tumbler_flow_explicit");
     for (int run = 0; run < kRuns; ++run) {
         const std::string before = verify::load_average();
         flow.push_back(run_timed(kFlowScene, dir + "/tumbler_flow"));
         flow_explicit.push_back(run_timed(explicit_flow, dir + "/tumbler_flow_explicit"));
         coupled.push_back(run_timed(kCoupledScene, dir + "/tumbler"));
-        times.row({static_cast<double>(run), flow.back(), coupled.back(), flow_explicit.back()});
+        times.row({{"run", static_cast<double>(run)}, {"flow_seconds", flow.back()},
+                    {"coupled_seconds", coupled.back()}, {"flow_explicit_seconds", flow_explicit.back()}});
         std::printf("run %d: tumbler-flow %.1f s (explicit %.1f s), tumbler %.1f s wall on %d threads (load average before: %s, after: %s)\n",
                     run, flow.back(), flow_explicit.back(), coupled.back(), threads, before.c_str(),
                     verify::load_average().c_str());
@@ -171,12 +173,15 @@ int main(int argc, char** argv) {
            verify::format(1e9 * on.at("seconds_segregation") / (on.at("substeps") * on.at("inside_cells"))) + " ns per cell");
 
     const auto kinematic = verify::last_row(dir + "/tumbler_kinematic/tumbler_metrics.dat");
-    DataTable pattern({"drum", "segregation_index", "ring", "periphery", "core"});
+    DataTable pattern;
     pattern.comment("pattern metrics after 25 s (pattern_metrics.hpp): drum 0 = coupled (tumbler), 1 = coupled without "
                     "packing feedback, 2 = kinematic (tumbler-kinematic)");
-    pattern.row({0, on.at("segregation_index"), on.at("ring"), on.at("periphery"), on.at("core")});
-    pattern.row({1, off.at("segregation_index"), off.at("ring"), off.at("periphery"), off.at("core")});
-    pattern.row({2, kinematic.at("index"), kinematic.at("ring"), kinematic.at("periphery"), kinematic.at("core")});
+    pattern.row({{"drum", 0}, {"segregation_index", on.at("segregation_index")}, {"ring", on.at("ring")},
+                  {"periphery", on.at("periphery")}, {"core", on.at("core")}});
+    pattern.row({{"drum", 1}, {"segregation_index", off.at("segregation_index")}, {"ring", off.at("ring")},
+                  {"periphery", off.at("periphery")}, {"core", off.at("core")}});
+    pattern.row({{"drum", 2}, {"segregation_index", kinematic.at("index")}, {"ring", kinematic.at("ring")},
+                  {"periphery", kinematic.at("periphery")}, {"core", kinematic.at("core")}});
     verify::write_data(options, "bench_tumbler_pattern.dat", pattern);
     for (const auto& [label, m] : {std::pair{"coupled", on}, std::pair{"coupled, no packing feedback", off}})
         t.note("d. " + std::string(label) + ": index " + verify::format(m.at("segregation_index")) + ", ring " +

@@ -96,8 +96,8 @@ InclineProfileErrors incline_profile_errors(const Material& m, const InclineRun&
     const double slope = mu * std::sqrt(T_bvp) / m.eta0;
     for (int k = 0; k < nz; ++k) {
         if (rows)
-            rows->row({static_cast<double>(nz), r.z[k], r.Phi[k], Phi_bvp[k], r.u[k], Phi_bvp[k] > 0 ? slope * r.z[k] : 0.0,
-                       r.T[k], T_bvp});
+            rows->row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"Phi", r.Phi[k]}, {"Phi_bvp", Phi_bvp[k]},
+                       {"u_x", r.u[k]}, {"u_bvp", Phi_bvp[k] > 0 ? slope * r.z[k] : 0.0}, {"T", r.T[k]}, {"T_bvp", T_bvp}});
         if (!in_bed(m, r.Phi[k]) || r.z[k] + 1.5 * h > surface) continue;  // not the surface cell
         e.u = std::max(e.u, std::fabs(r.u[k] - slope * r.z[k]) / (slope * kInclineDepth));
         e.Phi = std::max(e.Phi, std::fabs(r.Phi[k] - Phi_bvp[k]));

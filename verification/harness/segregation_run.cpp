@@ -36,6 +36,12 @@ SegregationOptions scheme_options(SegregationScheme scheme, double cfl) {
     return options;
 }
 
+std::string scheme_column(SegregationScheme scheme) {
+    std::string name = scheme_name(scheme);
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
 ColumnRun run_column(const Column& column, const std::vector<double>& phi0, const SegregationOptions& options,
                      double t_end, bool monitor) {
     ColumnRun run;

@@ -33,6 +33,9 @@ ColumnRun run_column(const Column& column, const std::vector<double>& phi0, cons
 /// Options with the given scheme and cfl (limiter: mc).
 SegregationOptions scheme_options(SegregationScheme scheme, double cfl = 0.9);
 
+/// A scheme's name as a data-file column ("modified_godunov").
+std::string scheme_column(SegregationScheme scheme);
+
 /// Relative change of the long-double sum of phi between two states.
 double relative_mass_change(const std::vector<double>& before, const std::vector<double>& after);
 

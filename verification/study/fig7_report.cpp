@@ -192,10 +192,7 @@ Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o)
 
 void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
     const auto& quantities = fig7_quantities();
-    std::vector<std::string> columns{"kind", "explicit", "cells", "h_mm", "dt_factor", "dt_mean_ms", "steps", "wall_s", "cpu_s"};
-    for (const Fig7Quantity& q : quantities) columns.push_back(q.name), columns.push_back(std::string(q.name) + "_se");
-    for (const char* c : {"transport", "dt_max_ms", "dt_max_share", "points", "points_se"}) columns.push_back(c);
-    DataTable runs(columns);
+    DataTable runs;
     runs.comment("bench_fig7_convergence: one row per run; kind 0 grid, 1 dt, 2 tracer, 3 floor (T_floor " +
                  fig7_number(o.T_floor_low) + ", the model with the tracer); tracer runs: the core columns hold the tracer's retained share; explicit 1 for the explicit time stepping; "
                  "dt_mean = t_end/steps; transport: index in --transports (-1 explicit); dt_max_share: share of the steps whose dt dt_max set; points, points_se: tracer runs' material points' retained share of the core; wall and CPU (all threads) time on " + std::to_string(o.threads) + " threads; each quantity (angle deg, layer mm) "
@@ -203,18 +200,20 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
                  " s, or the jitter over the last " + fig7_number(o.jitter_window) + " s of a value at t_end = " +
                  fig7_number(o.t_end) + " s)");
     for (const Fig7Result& r : a.results) {
-        std::vector<double> row{static_cast<double>(r.run.kind), r.run.explicit_steps ? 1.0 : 0.0, static_cast<double>(r.run.cells),
-                                1e3 * r.h, r.run.dt_factor, 1e3 * r.dt_mean, r.steps, r.wall, r.cpu};
-        for (int q = 0; q < kFig7Quantities; ++q) row.push_back(r.value[q]), row.push_back(r.sampling[q]);
+        TableRow row{{"kind", static_cast<double>(r.run.kind)}, {"explicit", r.run.explicit_steps ? 1.0 : 0.0},
+                     {"cells", static_cast<double>(r.run.cells)}, {"h_mm", 1e3 * r.h}, {"dt_factor", r.run.dt_factor},
+                     {"dt_mean_ms", 1e3 * r.dt_mean}, {"steps", r.steps}, {"wall_s", r.wall}, {"cpu_s", r.cpu}};
+        for (int q = 0; q < kFig7Quantities; ++q)
+            row.add(quantities[q].name, r.value[q]).add(std::string(quantities[q].name) + "_se", r.sampling[q]);
         const auto t = std::find(o.transports.begin(), o.transports.end(), r.run.transport);
-        row.push_back(r.run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin()));
-        row.push_back(1e3 * r.run.dt_max), row.push_back(r.dt_max_share), row.push_back(r.points), row.push_back(r.points_sampling);
+        row.add({{"transport", r.run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin())},
+                 {"dt_max_ms", 1e3 * r.run.dt_max}, {"dt_max_share", r.dt_max_share}, {"points", r.points},
+                 {"points_se", r.points_sampling}});
         runs.row(row);
     }
     write_file_atomically(o.data_dir + "/fig7_runs.dat", runs.str());
 
-    DataTable conv({"quantity", "series", "runs", "x1", "f1", "se_max", "condition", "p", "f0", "p_u", "fs", "sigma", "U",
-                    "e_a", "e_ext", "chi2", "chi2_95", "lo", "hi", "outside"});
+    DataTable conv;
     conv.comment("bench_fig7_convergence: quantity 0..7 = angle layer index ring periphery core contrast axis; series 0 the "
                  "reference transport (h), 1 explicit (h), 2 dt at the finest grid (mean dt), 3 tracer (core), 4 the second "
                  "transport (h), 5 dt at the coarsest grid, 6 material points (core); x1 = finest h (mm) or dt (ms); condition 0 "
@@ -227,9 +226,13 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
           "U of the finest | e_a | e_ext | flag |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Estimate& e : a.estimates) {
         const GridConvergence& g = e.g;
-        conv.row({static_cast<double>(e.quantity), static_cast<double>(series_code(e.series, a)), static_cast<double>(e.f.size()),
-                  1e3 * e.h[0], e.f[0], e.se_max, static_cast<double>(g.condition), g.p, g.f0, g.p_u, g.fs, g.sigma,
-                  g.uncertainty, g.e_a, g.e_ext, g.chi2, g.chi2_limit, g.lo, g.hi, g.outside_bounds ? 1.0 : 0.0});
+        conv.row({{"quantity", static_cast<double>(e.quantity)},
+                   {"series", static_cast<double>(series_code(e.series, a))},
+                   {"runs", static_cast<double>(e.f.size())}, {"x1", 1e3 * e.h[0]}, {"f1", e.f[0]},
+                   {"se_max", e.se_max}, {"condition", static_cast<double>(g.condition)}, {"p", g.p}, {"f0", g.f0},
+                   {"p_u", g.p_u}, {"fs", g.fs}, {"sigma", g.sigma}, {"U", g.uncertainty}, {"e_a", g.e_a},
+                   {"e_ext", g.e_ext}, {"chi2", g.chi2}, {"chi2_95", g.chi2_limit}, {"lo", g.lo}, {"hi", g.hi},
+                   {"outside", g.outside_bounds ? 1.0 : 0.0}});
         const Fig7Quantity& q = quantities[e.quantity];
         std::string values;
         for (double f : e.f) values += (values.empty() ? "" : ", ") + fig7_number(f);

@@ -174,9 +174,10 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         const auto wall0 = std::chrono::steady_clock::now();
         run_scene_file(scene_path, dir);
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-        DataTable table({"wall_seconds", "cpu_seconds", "threads"});
+        DataTable table;
         table.comment("bench_fig7_convergence: wall and CPU time (all threads) of the run of " + run.name + ".toml");
-        table.row({wall, cpu_now() - cpu0, static_cast<double>(o.threads)});
+        table.row({{"wall_seconds", wall}, {"cpu_seconds", cpu_now() - cpu0},
+                    {"threads", static_cast<double>(o.threads)}});
         write_file_atomically(wall_file, table.str());
     }
     Fig7Result r;

@@ -34,10 +34,7 @@ const std::vector<Fig7Use>& fig7_uses() {
 std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Options& o) {
     const auto& quantities = fig7_quantities();
     const Fig7Result& ref = a.reference_run();
-    std::vector<std::string> columns{"transport", "cells", "dt_factor", "cpu_s", "wall_s"};
-    for (const Fig7Quantity& q : quantities) columns.push_back(std::string("err_") + q.name);
-    for (const Fig7Quantity& q : quantities) columns.push_back(std::string("u_") + q.name);
-    DataTable table(columns);
+    DataTable table;
     std::string refs;
     for (int q = 0; q < kFig7Quantities; ++q)
         refs += std::string(q ? ", " : "") + quantities[q].name + " " + fig7_number(ref.value[q]) + " +- " + fig7_number(a.band(q), 3);
@@ -54,12 +51,13 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
           "core error |\n|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Result* r : runs) {
         const auto t = std::find(o.transports.begin(), o.transports.end(), r->run.transport);
-        std::vector<double> row{r->run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin()),
-                                static_cast<double>(r->run.cells), r->run.dt_factor, r->cpu, r->wall};
-        for (int q = 0; q < kFig7Quantities; ++q) row.push_back(std::fabs(r->value[q] - ref.value[q]));
-        for (int q = 0; q < kFig7Quantities; ++q) row.push_back(a.band(q));
+        TableRow row{{"transport", r->run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin())},
+                     {"cells", static_cast<double>(r->run.cells)}, {"dt_factor", r->run.dt_factor}, {"cpu_s", r->cpu},
+                     {"wall_s", r->wall}};
+        for (int q = 0; q < kFig7Quantities; ++q) row.add(std::string("err_") + quantities[q].name, std::fabs(r->value[q] - ref.value[q]));
+        for (int q = 0; q < kFig7Quantities; ++q) row.add(std::string("u_") + quantities[q].name, a.band(q));
         table.row(row);
-        const auto err = [&](int q) { return error_cell(row[5 + q], a.band(q)); };
+        const auto err = [&](int q) { return error_cell(std::fabs(r->value[q] - ref.value[q]), a.band(q)); };
         md << "| " << series_name(*r) << " | " << r->run.cells << " | " << fig7_number(1e3 * r->run.dt_max, 4) << " | "
            << fig7_number(r->cpu, 4) << " | " << err(kAngle) << " | " << err(kIndex) << " | " << err(kLayer) << " | " << err(kCore)
            << " |\n";
