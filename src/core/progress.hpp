@@ -14,12 +14,18 @@ namespace granseg {
 struct RunTime {
     double wall = 0.0, cpu = 0.0;
     int threads = 1;
+    /// This run's cost with the seconds of its earlier part (a resumed run, core/run_checkpoints.hpp).
+    RunTime operator+(const RunTime& earlier) const { return {wall + earlier.wall, cpu + earlier.cpu, threads}; }
 };
+
+/// CPU seconds of the whole process (every thread) since it started.
+double process_cpu_seconds();
 
 class Progress {
 public:
-    /// `label` prefixes each line; `total` is the value of the progress variable at the end.
-    Progress(std::string label, double total, double quiet_seconds = 3.0, double every_seconds = 5.0);
+    /// `label` prefixes each line; `total` is the value of the progress variable at the end and
+    /// `start` its value now (a resumed run's: the ETA follows the rate since then).
+    Progress(std::string label, double total, double start = 0.0, double quiet_seconds = 3.0, double every_seconds = 5.0);
     /// Reports that the progress variable has reached `done` (prints only when due).
     void update(double done);
     /// The run's cost so far; prints it as a final line if anything was printed before.
@@ -32,7 +38,7 @@ public:
 private:
     using clock = std::chrono::steady_clock;
     std::string label_;
-    double total_;
+    double total_, start_value_;
     double quiet_, every_;
     clock::time_point start_, last_;
     double cpu_start_;

@@ -261,6 +261,13 @@ std::string SceneFile::settings(const std::vector<std::string>& ignored) const {
     return out;
 }
 
+std::string first_setting_missing(const std::string& a, const std::string& b) {
+    std::istringstream in(a);
+    for (std::string line; std::getline(in, line);)
+        if (("\n" + b).find("\n" + line + "\n") == std::string::npos) return line;
+    return "";
+}
+
 void SceneFile::finish() const {
     // Collect every offending entry with its line, then report the first one in the file.
     struct Problem {

@@ -116,4 +116,8 @@ private:
     std::string name_;
 };
 
+/// The first line of settings `a` (SceneFile::settings) that `b` lacks, "" if none: how two runs'
+/// settings differ, for messages.
+std::string first_setting_missing(const std::string& a, const std::string& b);
+
 }  // namespace granseg

@@ -15,18 +15,20 @@
 //
 // Saving appends every value; restoring reads each back into the member. A member is a number,
 // an enum, a bool, a contiguous container of numbers (std::vector, std::string, Eigen vectors),
-// a std::array of those, or a class with its own checkpoint(StateIO&) (it lists its members in
-// turn). A member added to a class that the next step reads goes into its list as well: the
+// a std::array or a std::vector of members, or a class with its own checkpoint(StateIO&) (it
+// lists its members in turn). A member added to a class that the next step reads goes into its list as well: the
 // kill-and-resume checks (verify_resume, tests/test_checkpoint.cpp) compare a resumed run with an
 // uninterrupted one bit for bit and catch one forgotten.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace granseg {
 
@@ -47,6 +49,10 @@ template <class T>
 struct is_array : std::false_type {};
 template <class T, std::size_t N>
 struct is_array<std::array<T, N>> : std::true_type {};
+template <class T>
+struct is_vector : std::false_type {};
+template <class T, class A>
+struct is_vector<std::vector<T, A>> : std::true_type {};
 }  // namespace state_io_detail
 
 class StateIO {
@@ -70,6 +76,11 @@ public:
             using Element = std::remove_pointer_t<decltype(value.data())>;
             if (restoring_) value.resize(count(name, sizeof(Element)));
             transfer(name, value.data(), sizeof(Element), static_cast<std::size_t>(value.size()));
+        } else if constexpr (is_vector<T>::value) {  // of strings, of classes: the count, then each
+            std::uint64_t n = value.size();
+            (*this)((std::string(name) + ".size").c_str(), n);
+            if (restoring_) value.resize(static_cast<std::size_t>(n));
+            for (auto& element : value) (*this)(name, element);
         } else {
             static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>, "StateIO: a number, an enum, a container or a class with checkpoint()");
             transfer(name, &value, sizeof(T), 1);

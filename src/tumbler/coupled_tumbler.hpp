@@ -98,6 +98,13 @@ public:
     double step(double t_end = std::numeric_limits<double>::infinity());
     /// Takes the segregation sub-step for the time since the last one, if any (before output).
     void synchronise();
+    /// Starts from another run's flow instead of the bed at rest: the flow solver's state from
+    /// `flow_state` (a tumbler-flow's or a tumbler's checkpoint, core/state_io.hpp), its time and
+    /// steps included; phi = phi_hat0 Phi and the tracer from tracer0 at the cells' lab positions
+    /// at that time; the segregation starts there as at t = 0. InputError for phi_hat0 or tracer0
+    /// outside [0, 1] in a cell holding material, InvariantError (packing feedback) for a cell packed
+    /// beyond Phi_rcp(phi_hat0).
+    void start_from(StateIO& flow_state);
 
     const CoupledTumblerSetup& setup() const { return setup_; }
     const FlowSolver& flow() const { return flow_; }
