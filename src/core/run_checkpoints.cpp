@@ -67,7 +67,15 @@ RunCheckpoints& checkpoints_or_none(RunCheckpoints* checkpoints) {
 
 RunCheckpoints::RunCheckpoints(CheckpointPlan plan)
     : plan_(std::move(plan)), start_(std::chrono::steady_clock::now()), last_(start_), cpu_start_(process_cpu_seconds()) {
-    if (enabled()) watch_signals();
+    if (!enabled()) return;
+    watch_signals();
+    // A run killed while writing left its temporary file (the checkpoint itself is whole): remove it.
+    namespace fs = std::filesystem;
+    const fs::path file(plan_.path);
+    std::error_code ec;
+    const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (e.path().filename().string().rfind(file.filename().string() + ".tmp.", 0) == 0) fs::remove(e.path(), ec);
 }
 
 RunCheckpoints::~RunCheckpoints() {
