@@ -1,19 +1,21 @@
 #include "core/progress.hpp"
 
+#include <omp.h>
+
 #include <cstdio>
 #include <ctime>
 
 namespace granseg {
 
-double process_cpu_seconds() {
+double run_cpu_seconds() {
     timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    clock_gettime(omp_get_max_threads() == 1 ? CLOCK_THREAD_CPUTIME_ID : CLOCK_PROCESS_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 Progress::Progress(std::string label, double total, double start, double quiet_seconds, double every_seconds)
     : label_(std::move(label)), total_(total), start_value_(start), quiet_(quiet_seconds), every_(every_seconds),
-      start_(clock::now()), last_(start_), cpu_start_(process_cpu_seconds()) {}
+      start_(clock::now()), last_(start_), cpu_start_(run_cpu_seconds()) {}
 
 void Progress::update(double done) {
     const auto now = clock::now();
@@ -39,6 +41,6 @@ RunTime Progress::finish(int threads) {
 
 double Progress::wall_seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
 
-double Progress::cpu_seconds() const { return process_cpu_seconds() - cpu_start_; }
+double Progress::cpu_seconds() const { return run_cpu_seconds() - cpu_start_; }
 
 }  // namespace granseg

@@ -1,7 +1,7 @@
 // Progress on stderr for long runs: "label: 42% (t = 10.5 of 25) 12 s elapsed, ETA 16 s".
 // Silent for the first few seconds, so short runs and verification programs stay quiet; then
 // one line every few seconds (plain lines, readable in CI logs). The run's wall and CPU seconds
-// (CPU: all threads of the process) and its threads go to the last line; wall_seconds() and
+// (run_cpu_seconds: all its threads) and its threads go to the last line; wall_seconds() and
 // cpu_seconds() feed the run summaries.
 #pragma once
 
@@ -18,8 +18,10 @@ struct RunTime {
     RunTime operator+(const RunTime& earlier) const { return {wall + earlier.wall, cpu + earlier.cpu, threads}; }
 };
 
-/// CPU seconds of the whole process (every thread) since it started.
-double process_cpu_seconds();
+/// CPU seconds of the run going on in this thread, since the process started: this thread's own
+/// where OpenMP gives it one thread (the run does all its work here, while other runs may share
+/// the process: a study's runs side by side), else the whole process's (every thread).
+double run_cpu_seconds();
 
 class Progress {
 public:
@@ -32,7 +34,7 @@ public:
     RunTime finish(int threads = 1);
     /// Wall-clock seconds since construction.
     double wall_seconds() const;
-    /// CPU seconds of the whole process (every thread) since construction.
+    /// CPU seconds of the run (run_cpu_seconds) since construction.
     double cpu_seconds() const;
 
 private:

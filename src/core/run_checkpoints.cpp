@@ -66,7 +66,7 @@ RunCheckpoints& checkpoints_or_none(RunCheckpoints* checkpoints) {
 }
 
 RunCheckpoints::RunCheckpoints(CheckpointPlan plan)
-    : plan_(std::move(plan)), start_(std::chrono::steady_clock::now()), last_(start_), cpu_start_(process_cpu_seconds()) {
+    : plan_(std::move(plan)), start_(std::chrono::steady_clock::now()), last_(start_), cpu_start_(run_cpu_seconds()) {
     if (!enabled()) return;
     watch_signals();
     // A run killed while writing left its temporary file (the checkpoint itself is whole): remove it.
@@ -85,7 +85,7 @@ RunCheckpoints::~RunCheckpoints() {
 std::string RunCheckpoints::saved(const RunState& state) const {
     StateIO io;
     double wall = earlier_.wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    double cpu = earlier_.cpu + process_cpu_seconds() - cpu_start_;
+    double cpu = earlier_.cpu + run_cpu_seconds() - cpu_start_;
     io("run.wall_seconds", wall)("run.cpu_seconds", cpu);
     state(io);
     return io.bytes();
@@ -127,7 +127,7 @@ std::string RunCheckpoints::mismatch(const Checkpoint& c) const {
 bool RunCheckpoints::resume(double t_end, const RunState& state) {
     if (!enabled() || plan_.resume == Resume::no) return false;
     if (!std::filesystem::exists(plan_.path)) {
-        std::fprintf(stderr, "%s: no checkpoint yet: starting at t = 0\n", plan_.path.c_str());
+        if (plan_.resume == Resume::yes) std::fprintf(stderr, "%s: no checkpoint yet: starting at t = 0\n", plan_.path.c_str());
         return false;
     }
     Checkpoint c;
