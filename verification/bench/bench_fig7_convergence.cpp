@@ -34,6 +34,7 @@
 #include "study/fig7_report.hpp"
 #include "study/fig7_study.hpp"
 #include "study/fig7_work.hpp"
+#include "study/study_options.hpp"
 
 #include <boost/program_options.hpp>
 
@@ -51,61 +52,10 @@ namespace po = boost::program_options;
 
 namespace {
 
+constexpr const char* kProgram = "bench_fig7_convergence";
+
 [[noreturn]] void bad_option(const std::string& option, const std::string& what, const std::string& allowed) {
-    std::cerr << "bench_fig7_convergence: --" << option << ": " << what << " (allowed: " << allowed << ")\n";
-    std::exit(kExitBadInput);
-}
-
-/// "50,71,100" -> {50, 71, 100}; "" or "none" -> {}; each at least the tumbler's smallest grid,
-/// strictly increasing.
-std::vector<int> cell_list(const std::string& option, const std::string& text) {
-    const std::string allowed = "comma-separated increasing integers >= " + std::to_string(min_tumbler_cells()) + ", or none";
-    std::vector<int> cells;
-    if (text.empty() || text == "none") return cells;
-    std::istringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
-        std::size_t used = 0;
-        int n = 0;
-        try {
-            n = std::stoi(item, &used);
-        } catch (const std::exception&) {
-            bad_option(option, "\"" + item + "\" is not an integer", allowed);
-        }
-        if (used != item.size() || n < min_tumbler_cells() || n > 2000 || (!cells.empty() && n <= cells.back()))
-            bad_option(option, "\"" + text + "\"", allowed);
-        cells.push_back(n);
-    }
-    return cells;
-}
-
-/// "0.5,0.25" -> {0.5, 0.25}; "" or "none" -> {}; each factor in (0, 1) (dt_max keeps binding).
-std::vector<double> factor_list(const std::string& option, const std::string& text) {
-    std::vector<double> factors;
-    if (text.empty() || text == "none") return factors;
-    std::istringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
-        char* end = nullptr;
-        const double f = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !(f > 0.0 && f < 1.0)) bad_option(option, "\"" + text + "\"", "comma-separated factors in (0, 1), or none");
-        factors.push_back(f);
-    }
-    return factors;
-}
-
-/// "muscl,donor-cell" -> the transports, each one of [flow] transport's names, no repeats.
-std::vector<std::string> transport_list(const std::string& text) {
-    const std::vector<std::string> names = choice_names(kTransports);
-    std::string allowed;
-    for (const std::string& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
-        if (std::find(names.begin(), names.end(), item) == names.end() || std::find(out.begin(), out.end(), item) != out.end())
-            bad_option("transports", "\"" + text + "\"", "comma-separated, each once: " + allowed);
-        out.push_back(item);
-    }
-    if (out.empty()) bad_option("transports", "\"" + text + "\"", "one or more of " + allowed);
-    return out;
+    verify::bad_option(kProgram, option, what, allowed);
 }
 
 Fig7Options parse(int argc, char** argv) {
@@ -137,25 +87,17 @@ Fig7Options parse(int argc, char** argv) {
         std::exit(kExitBadInput);
     }
     if (vm.count("help")) std::cout << d << "\n", std::exit(0);
-    o.cells = cell_list("cells", cells), o.explicit_cells = cell_list("explicit-cells", explicit_cells);
-    o.transports = transport_list(transports);
-    o.dt_coarse = factor_list("dt-coarse", dt_coarse), o.dt_fine = factor_list("dt-fine", dt_fine);
+    o.cells = cell_list(kProgram, "cells", cells), o.explicit_cells = cell_list(kProgram, "explicit-cells", explicit_cells);
+    o.transports = transport_list(kProgram, transports);
+    o.dt_coarse = number_list(kProgram, "dt-coarse", dt_coarse, 0.0, 1.0), o.dt_fine = number_list(kProgram, "dt-fine", dt_fine, 0.0, 1.0);
     o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study"), o.reuse = vm.count("reuse") > 0;
     if (o.cells.size() < 3) bad_option("cells", "\"" + cells + "\" has fewer than three grids", "three or more");
     if (o.explicit_cells.size() == 1) bad_option("explicit-cells", "one grid", "none, or two or more");
     if (o.dt_study && (o.dt_coarse.empty() || o.dt_fine.empty()))
         bad_option("dt-coarse", "no dt factor at one end", "one or more factors at each end, or --no-dt-study");
     if (!(o.dt_ref > 0.0 && o.dt_ref <= 0.1)) bad_option("dt-ref", fig7_number(o.dt_ref), "0 < dt_ref <= 0.1 s");
-    if (!(o.t_end > 0.0 && o.t_end <= 1000.0)) bad_option("t-end", fig7_number(o.t_end), "0 < t_end <= 1000");
-    if (!(o.average_from >= 0.0 && o.average_from < o.t_end))
-        bad_option("average-from", fig7_number(o.average_from), "0 <= average_from < t_end");
-    if (!(o.jitter_window > 0.0 && o.jitter_window <= o.t_end))
-        bad_option("jitter-window", fig7_number(o.jitter_window), "0 < jitter_window <= t_end");
     if (!(o.T_floor_low > 0.0 && o.T_floor_low < 1e-2)) bad_option("T-floor-low", fig7_number(o.T_floor_low), "0 < T < 0.01");
-    if (o.threads < 1 || o.threads > 256) bad_option("threads", std::to_string(o.threads), "1..256");
-    if (o.lanes == 0) o.lanes = o.threads == 1 ? verify::machine_cores() : 1;
-    if (o.lanes < 1 || o.lanes > 256 || (o.lanes > 1 && o.threads != 1))
-        bad_option("lanes", std::to_string(o.lanes), "0..256, and 1 unless --threads 1");
+    check_run_options(kProgram, o);
     return o;
 }
 

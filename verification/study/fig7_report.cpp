@@ -37,7 +37,9 @@ GridConvergence range_of(const std::vector<double>& f) {
     return g;
 }
 
-Fig7Estimate estimate(int q, const std::string& series, const std::vector<const Fig7Result*>& runs, bool dt_axis) {
+}  // namespace
+
+Fig7Estimate fig7_estimate(int q, const std::string& series, const std::vector<const Fig7Result*>& runs, bool dt_axis) {
     Fig7Estimate e;
     e.quantity = q, e.series = series;
     for (const Fig7Result* r : runs) {
@@ -54,6 +56,8 @@ Fig7Estimate estimate(int q, const std::string& series, const std::vector<const 
     e.g = increasing && defined ? grid_convergence(e.h, e.f, e.se, kFormalOrder, Bounds{quantity.lower, quantity.upper}) : range_of(e.f);
     return e;
 }
+
+namespace {
 
 /// A table cell: the number, or a dash where it is not defined.
 std::string cell(double v, int digits = 6) { return std::isnan(v) ? "–" : fig7_number(v, digits); }
@@ -176,17 +180,17 @@ Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o)
     a.reference_series = o.transports.front();
     const auto grid_explicit = a.runs(Fig7Kind::grid, true);
     for (int q = 0; q < kFig7Quantities; ++q) {
-        for (const std::string& t : o.transports) a.estimates.push_back(estimate(q, t, a.runs(Fig7Kind::grid, false, t), false));
-        if (grid_explicit.size() >= 2) a.estimates.push_back(estimate(q, "explicit", grid_explicit, false));
+        for (const std::string& t : o.transports) a.estimates.push_back(fig7_estimate(q, t, a.runs(Fig7Kind::grid, false, t), false));
+        if (grid_explicit.size() >= 2) a.estimates.push_back(fig7_estimate(q, "explicit", grid_explicit, false));
         if (o.dt_study) {
-            a.estimates.push_back(estimate(q, "dt coarsest", a.dt_runs(o.cells.front()), true));
-            a.estimates.push_back(estimate(q, "dt finest", a.dt_runs(o.cells.back()), true));
+            a.estimates.push_back(fig7_estimate(q, "dt coarsest", a.dt_runs(o.cells.front()), true));
+            a.estimates.push_back(fig7_estimate(q, "dt finest", a.dt_runs(o.cells.back()), true));
         }
     }
     const auto tracer = a.runs(Fig7Kind::tracer, false);
     const int core = 5;  // fig7_quantities(): the core's share, for the tracer its retained share
-    if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "tracer", tracer, false));
-    if (tracer.size() >= 2) a.estimates.push_back(estimate(core, "points", tracer, false));
+    if (tracer.size() >= 2) a.estimates.push_back(fig7_estimate(core, "tracer", tracer, false));
+    if (tracer.size() >= 2) a.estimates.push_back(fig7_estimate(core, "points", tracer, false));
     return a;
 }
 

@@ -56,6 +56,11 @@ struct Fig7Analysis {
     double band(int quantity) const;
 };
 
+/// The estimate of `quantity` over `runs` (fine to coarse) against their cell size, or with dt_axis
+/// their mean time step: a study where the abscissae increase and every value is defined, else the
+/// range of the values (condition undetermined).
+Fig7Estimate fig7_estimate(int quantity, const std::string& series, const std::vector<const Fig7Result*>& runs, bool dt_axis);
+
 /// The estimates of every quantity in every series the runs allow.
 Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& options);
 

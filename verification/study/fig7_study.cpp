@@ -87,10 +87,11 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     else flow.insert_or_assign("transport", run.transport);
     flow.insert_or_assign("dt_max", run.dt_max);
     if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
+    if (!run.packing_feedback) section("coupling").insert_or_assign("packing_feedback", false);
     if (is_tracer(run.kind)) {
         // The tracer fills the drum's own core at that grid: r < d - layer, the layer measured by
         // the reference transport's grid run of the same cells (run before the tracer runs).
-        const std::string grid_run = o.data_dir + "/fig7_convergence/" + cell_name(o.transports.front().c_str(), run.cells);
+        const std::string grid_run = o.data_dir + "/" + o.study_dir + "/" + cell_name(o.transports.front().c_str(), run.cells);
         const NamedTable grid_summary = read_named(grid_run + "/summary.dat");
         const double r_core = grid_summary.at(grid_summary.last(), "r_core_layer");
         char expression[96];
@@ -159,7 +160,7 @@ std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
 
 Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     namespace fs = std::filesystem;
-    const std::string dir = o.data_dir + "/fig7_convergence/" + run.name, scene_path = dir + ".toml";
+    const std::string dir = o.data_dir + "/" + o.study_dir + "/" + run.name, scene_path = dir + ".toml";
     const std::string text = scene_text(run, o);
     const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text && fs::exists(dir + "/summary.dat");
     if (!reuse) {

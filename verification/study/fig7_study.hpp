@@ -37,6 +37,7 @@ constexpr int kDtRefCells = 50;
 /// The study's settings (bench_fig7_convergence's command line; defaults: the real study).
 struct Fig7Options {
     std::string data_dir = "build/bench-data";
+    std::string study_dir = "fig7_convergence";  // the runs go to data_dir/study_dir/NAME
     std::vector<int> cells{50, 70, 100, 140};    // coarse to fine (even counts keep the axis on a vertex)
     std::vector<std::string> transports{"muscl", "donor-cell"};  // [flow] transport of the grid series, the first is the reference
     std::vector<int> explicit_cells{};           // explicit time stepping (none, two or more)
@@ -65,6 +66,7 @@ struct Fig7Run {
     double dt_factor = 1.0;     // dt_max relative to the grid's (Fig7Options::dt_max)
     std::string transport;      // [flow] transport ("" for the explicit time stepping)
     double dt_max = 0;          // s
+    bool packing_feedback = true;  // [coupling] packing_feedback
 };
 
 /// The Fig. 7 quantities, in the order of every table: name, unit, whether it is a time average

@@ -1,0 +1,134 @@
+#include "study/dt_study.hpp"
+
+#include "core/output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace granseg::verify {
+
+namespace {
+
+/// NAME of a run: PART_TRANSPORT_nCELLS_dtDT ("feedback_muscl_n50_dt0.002").
+std::string run_name(bool feedback, const std::string& transport, int cells, double dt) {
+    char s[96];
+    std::snprintf(s, sizeof s, "%s_%s_n%d_dt%g", feedback ? "feedback" : "nofeedback", transport.c_str(), cells, dt);
+    return s;
+}
+
+/// A table cell: the number, or a dash where it is not defined.
+std::string dt_cell(double v, int digits = 4) { return std::isfinite(v) ? fig7_number(v, digits) : "–"; }
+
+/// The value and its time error at the default step as a table cell: "error" for a converging
+/// series, "< bound (condition)" where no limit is formed.
+std::string error_cell(const DtEstimate& d, int digits) {
+    if (std::isfinite(d.error))
+        return fig7_number(d.error, digits) + (d.e.g.condition == Convergence::two_grids ? " (order 1 assumed)" : " (p " + dt_cell(d.e.g.p, 2) + ")");
+    return "< " + dt_cell(d.bound, digits) + " (" + convergence_name(d.e.g.condition) + ")";
+}
+
+int transport_code(const std::string& t) { return t == "muscl" ? 0 : 1; }
+
+}  // namespace
+
+const std::vector<int>& dt_study_quantities() {
+    static const std::vector<int> q{kAngle, kLayer, kIndex, kRing, kCore, kContrast, kAxis};
+    return q;
+}
+
+std::string part_name(bool feedback) { return feedback ? "feedback" : "no feedback"; }
+
+std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
+    std::vector<Fig7Run> runs;
+    for (const DtGrid& g : o.grids)
+        for (const std::string& t : o.run.transports)
+            for (bool feedback : o.feedback)
+                for (double dt : g.dt_max) {
+                    Fig7Run r{run_name(feedback, t, g.cells, dt), Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
+                    r.packing_feedback = feedback;
+                    runs.push_back(r);
+                }
+    return runs;
+}
+
+std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const DtStudyOptions& o) {
+    std::vector<DtEstimate> out;
+    for (const DtGrid& g : o.grids)
+        for (const std::string& t : o.run.transports)
+            for (bool feedback : o.feedback) {
+                std::vector<const Fig7Result*> series;  // smallest dt first (fine to coarse)
+                for (const Fig7Result& r : results)
+                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback) series.push_back(&r);
+                std::sort(series.begin(), series.end(), [](const Fig7Result* a, const Fig7Result* b) { return a->dt_mean < b->dt_mean; });
+                if (series.size() < 2) continue;
+                for (int q : dt_study_quantities()) {
+                    if (q == kContrast && !feedback) continue;  // without feedback Phi does not follow phi_hat
+                    DtEstimate d;
+                    d.feedback = feedback, d.transport = t, d.cells = g.cells;
+                    d.e = fig7_estimate(q, part_name(feedback) + " " + t, series, true);
+                    d.at_default = d.e.f.back();
+                    const Convergence c = d.e.g.condition;
+                    const bool limit = (c == Convergence::monotone || c == Convergence::two_grids) && std::isfinite(d.e.g.f0);
+                    d.error = limit ? d.at_default - d.e.g.f0 : std::numeric_limits<double>::quiet_NaN();
+                    d.bound = limit ? std::fabs(d.error) : d.e.g.hi - d.e.g.lo;
+                    out.push_back(d);
+                }
+            }
+    return out;
+}
+
+void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates, const DtStudyOptions& o) {
+    DataTable runs({"feedback", "transport", "cells", "dt_max", "dt_mean", "dt_max_share", "steps", "wall_seconds", "cpu_seconds",
+                    "angle", "angle_se", "layer_mm", "layer_se", "index", "index_se", "ring", "ring_se", "core", "core_se",
+                    "contrast", "contrast_se", "axis", "axis_se"});
+    runs.comment("bench_time_step: one row per run; transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
+                 "standard error of the mean over t >= " + fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " +
+                 fig7_number(o.run.jitter_window) + " s)");
+    for (const Fig7Result& r : results) {
+        std::vector<double> row{r.run.packing_feedback ? 1.0 : 0.0, static_cast<double>(transport_code(r.run.transport)),
+                                static_cast<double>(r.run.cells), r.run.dt_max, r.dt_mean, r.dt_max_share, r.steps, r.wall, r.cpu};
+        for (int q : dt_study_quantities()) row.push_back(r.value[q]), row.push_back(r.sampling[q]);
+        runs.row(row);
+    }
+    write_file_atomically(o.run.data_dir + "/time_step_runs.dat", runs.str());
+
+    DataTable points({"feedback", "transport", "cells", "quantity", "dt_mean", "value", "se", "f0", "p"});
+    points.comment("bench_time_step: per series (feedback, transport 0 muscl / 1 donor-cell, cells) and quantity (index into "
+                   "fig7_quantities: 0 angle, 1 layer, 2 index, 3 ring, 5 core, 6 contrast, 7 axis) the runs' values against "
+                   "their mean time step, with the fit's limit f0 and order p (NaN where none); one gnuplot block per series");
+    for (const DtEstimate& d : estimates) {
+        for (std::size_t i = 0; i < d.e.h.size(); ++i)
+            points.row({d.feedback ? 1.0 : 0.0, static_cast<double>(transport_code(d.transport)), static_cast<double>(d.cells),
+                        static_cast<double>(d.e.quantity), d.e.h[i], d.e.f[i], d.e.se[i], d.e.g.f0, d.e.g.p});
+        points.blank(), points.blank();  // a gnuplot block per series
+    }
+    write_file_atomically(o.run.data_dir + "/time_step.dat", points.str());
+
+    // The markdown table: per series the value at the default step and its time error.
+    std::ostringstream md;
+    md << "| part | transport | cells | quantity | values, largest dt_max first | sampling error | condition | limit (dt → 0) "
+          "| time error at the largest dt_max |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const DtEstimate& d : estimates) {
+        const Fig7Quantity& q = fig7_quantities()[d.e.quantity];
+        const int digits = d.e.quantity == kAngle ? 4 : 3;
+        std::string values;
+        for (auto it = d.e.f.rbegin(); it != d.e.f.rend(); ++it) values += (values.empty() ? "" : ", ") + dt_cell(*it, digits + 1);
+        md << "| " << part_name(d.feedback) << " | " << d.transport << " | " << d.cells << " | " << q.name << " (" << q.unit << ") | "
+           << values << " | " << dt_cell(d.e.se_max, 2) << " | " << convergence_name(d.e.g.condition) << " | " << dt_cell(d.e.g.f0, digits + 1)
+           << " | " << error_cell(d, 2) << " |\n";
+    }
+    std::string dts;
+    for (const DtGrid& g : o.grids) {
+        std::string list;
+        for (double dt : g.dt_max) list += (list.empty() ? "" : ", ") + fig7_number(1e3 * dt);
+        dts += (dts.empty() ? "" : "; ") + std::to_string(g.cells) + " cells: " + list + " ms";
+    }
+    md << "\ndt_max " << dts << "; t_end " << fig7_number(o.run.t_end) << " s, averages over t >= " << fig7_number(o.run.average_from)
+       << " s. Written by bench_time_step.\n";
+    write_file_atomically(o.run.data_dir + "/time_step.md", md.str());
+}
+
+}  // namespace granseg::verify
