@@ -81,28 +81,34 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
 }
 
 void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates, const DtStudyOptions& o) {
-    DataTable runs({"feedback", "transport", "cells", "dt_max", "dt_mean", "dt_max_share", "steps", "wall_seconds", "cpu_seconds",
-                    "angle", "angle_se", "layer_mm", "layer_se", "index", "index_se", "ring", "ring_se", "core", "core_se",
-                    "contrast", "contrast_se", "axis", "axis_se"});
+    DataTable runs;
     runs.comment("bench_time_step: one row per run; transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
                  "standard error of the mean over t >= " + fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " +
                  fig7_number(o.run.jitter_window) + " s)");
+    // The columns of dt_study_quantities(), in its order.
+    static const char* const columns[] = {"angle", "layer_mm", "index", "ring", "core", "contrast", "axis"};
+    static const char* const errors[] = {"angle_se", "layer_se", "index_se", "ring_se", "core_se", "contrast_se", "axis_se"};
     for (const Fig7Result& r : results) {
-        std::vector<double> row{r.run.packing_feedback ? 1.0 : 0.0, static_cast<double>(transport_code(r.run.transport)),
-                                static_cast<double>(r.run.cells), r.run.dt_max, r.dt_mean, r.dt_max_share, r.steps, r.wall, r.cpu};
-        for (int q : dt_study_quantities()) row.push_back(r.value[q]), row.push_back(r.sampling[q]);
+        TableRow row{{"feedback", r.run.packing_feedback ? 1.0 : 0.0}, {"transport", static_cast<double>(transport_code(r.run.transport))},
+                     {"cells", static_cast<double>(r.run.cells)}, {"dt_max", r.run.dt_max}, {"dt_mean", r.dt_mean},
+                     {"dt_max_share", r.dt_max_share}, {"steps", r.steps}, {"wall_seconds", r.wall}, {"cpu_seconds", r.cpu}};
+        for (std::size_t i = 0; i < dt_study_quantities().size(); ++i) {
+            const int q = dt_study_quantities()[i];
+            row.add(columns[i], r.value[q]).add(errors[i], r.sampling[q]);
+        }
         runs.row(row);
     }
     write_file_atomically(o.run.data_dir + "/time_step_runs.dat", runs.str());
 
-    DataTable points({"feedback", "transport", "cells", "quantity", "dt_mean", "value", "se", "f0", "p"});
+    DataTable points;
     points.comment("bench_time_step: per series (feedback, transport 0 muscl / 1 donor-cell, cells) and quantity (index into "
                    "fig7_quantities: 0 angle, 1 layer, 2 index, 3 ring, 5 core, 6 contrast, 7 axis) the runs' values against "
                    "their mean time step, with the fit's limit f0 and order p (NaN where none); one gnuplot block per series");
     for (const DtEstimate& d : estimates) {
         for (std::size_t i = 0; i < d.e.h.size(); ++i)
-            points.row({d.feedback ? 1.0 : 0.0, static_cast<double>(transport_code(d.transport)), static_cast<double>(d.cells),
-                        static_cast<double>(d.e.quantity), d.e.h[i], d.e.f[i], d.e.se[i], d.e.g.f0, d.e.g.p});
+            points.row({{"feedback", d.feedback ? 1.0 : 0.0}, {"transport", static_cast<double>(transport_code(d.transport))},
+                        {"cells", static_cast<double>(d.cells)}, {"quantity", static_cast<double>(d.e.quantity)},
+                        {"dt_mean", d.e.h[i]}, {"value", d.e.f[i]}, {"se", d.e.se[i]}, {"f0", d.e.g.f0}, {"p", d.e.g.p}});
         points.blank(), points.blank();  // a gnuplot block per series
     }
     write_file_atomically(o.run.data_dir + "/time_step.dat", points.str());
