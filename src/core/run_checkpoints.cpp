@@ -15,6 +15,9 @@ namespace granseg {
 
 namespace {
 
+/// Seconds of wall clock a run stays quiet about its checkpoints' cost (as core/progress.hpp).
+constexpr double kQuietSeconds = 3.0;
+
 // SIGINT and SIGTERM while checkpointed runs are under way: the handler only records the signal
 // (a lock-free atomic, safe in a handler); the runs see it between steps. A second signal
 // ends the process at once, as without a handler.
@@ -153,7 +156,10 @@ bool RunCheckpoints::resume(double t_end, const RunState& state) {
 }
 
 void RunCheckpoints::before_step(double t, double t_end, double longest_step, const RunState& state) {
-    if (enabled() && t + longest_step >= t_end) kept_ = saved(state);
+    if (!enabled() || t + longest_step < t_end) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    kept_ = saved(state);
+    spent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void RunCheckpoints::after_step(double t, long steps, const RunState& state) {
@@ -162,8 +168,13 @@ void RunCheckpoints::after_step(double t, long steps, const RunState& state) {
     const auto now = std::chrono::steady_clock::now();
     if (!signal && std::chrono::duration<double>(now - last_).count() < plan_.every) return;
     std::string written = plan_.path;
+    const struct Account {  // the time of this checkpoint, however it ends
+        double& spent;
+        std::chrono::steady_clock::time_point from;
+        ~Account() { spent += std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); }
+    } account{spent_, now};
     try {
-        write_checkpoint(plan_.path, make(t, steps, false, saved(state), ""));
+        write(make(t, steps, false, saved(state), ""));
     } catch (const InputError& e) {
         if (!signal) {
             std::fprintf(stderr, "granseg: %s; the run goes on\n", e.what());
@@ -185,11 +196,25 @@ void RunCheckpoints::after_step(double t, long steps, const RunState& state) {
 
 void RunCheckpoints::finish(double t, long steps, const RunState& state) {
     if (!enabled()) return;
+    const auto t0 = std::chrono::steady_clock::now();
     try {
-        write_checkpoint(plan_.path, make(t, steps, true, saved(state), kept_));
+        write(make(t, steps, true, saved(state), kept_));
     } catch (const InputError& e) {
         std::fprintf(stderr, "granseg: %s; the outputs are written all the same\n", e.what());
     }
+    spent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // Their cost, for long runs only (as the progress lines: quiet for the first seconds).
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (wall >= kQuietSeconds)
+        std::fprintf(stderr, "%s: %d checkpoints written, the last %.1f MB; %.2f s with the states kept before the last steps, "
+                             "%.2f %% of this run's %.0f s\n",
+                     plan_.path.c_str(), written_, last_size_ / 1e6, spent_, 100.0 * spent_ / wall, wall);
+}
+
+void RunCheckpoints::write(const Checkpoint& c) {
+    write_checkpoint(plan_.path, c);
+    ++written_;
+    last_size_ = static_cast<double>(std::filesystem::file_size(plan_.path));
 }
 
 }  // namespace granseg

@@ -67,6 +67,8 @@ public:
     ~RunCheckpoints();
 
     bool enabled() const { return !plan_.path.empty(); }
+    /// The checkpoint file ("" without checkpoints).
+    const std::string& path() const { return plan_.path; }
 
     /// Restores `state` from the plan's checkpoint as plan.resume says and returns true; false:
     /// the run starts at t = 0. InputError (one line naming the file) for a checkpoint that cannot
@@ -77,7 +79,8 @@ public:
     /// After a step: writes a checkpoint when due; after a stop signal writes one and throws
     /// Interrupted. A failed write is reported on stderr and the run goes on.
     void after_step(double t, long steps, const RunState& state);
-    /// At t_end: writes the final checkpoint (the state, and the state kept before the last step).
+    /// At t_end: writes the final checkpoint (the state, and the state kept before the last step);
+    /// a run of more than a few seconds says on stderr what its checkpoints cost.
     void finish(double t, long steps, const RunState& state);
     /// Wall and CPU seconds the run spent before this process resumed it (0 for a fresh run).
     RunTime earlier() const { return earlier_; }
@@ -91,12 +94,16 @@ private:
     bool refuse(const std::string& why) const;
     /// Why `c` cannot continue this run ("" if it can).
     std::string mismatch(const Checkpoint& c) const;
+    /// Writes `c` to the plan's file and counts it.
+    void write(const Checkpoint& c);
 
     CheckpointPlan plan_;
     std::string kept_;  // the state before a step that may end the run
     std::chrono::steady_clock::time_point start_, last_;
     double cpu_start_ = 0.0;
     RunTime earlier_;
+    int written_ = 0;
+    double last_size_ = 0.0, spent_ = 0.0;  // bytes of the last checkpoint; seconds spent on them all
 };
 
 /// The signal (SIGINT, SIGTERM) that asked the running checkpointed runs to stop; 0 if none.

@@ -33,11 +33,11 @@ void merge(BoundsMonitor& run, const BoundsMonitor& step) {
 /// A resumed run continues on the sample and frame times of this run: the last ones the checkpoint
 /// recorded must be this run's (an extension to a later t_end keeps their spacing: t_end/samples
 /// and t_end/frames as in the run that wrote it). InputError otherwise.
-void check_continuation(const TumblerRunResult& result, int next_sample, const std::function<double(int)>& sample_time,
-                        int next_frame, const std::function<double(int)>& frame_time) {
-    const auto check = [](const char* key, double recorded, double here, double spacing) {
+void check_continuation(const std::string& file, const TumblerRunResult& result, int next_sample,
+                        const std::function<double(int)>& sample_time, int next_frame, const std::function<double(int)>& frame_time) {
+    const auto check = [&](const char* key, double recorded, double here, double spacing) {
         if (recorded != here)
-            throw InputError(std::string("tumbler-kinematic: [output] ") + key + ": the checkpoint's last one is at t = " +
+            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " +
                              format_number(recorded, 17) + " s, this scene's at t = " + format_number(here, 17) +
                              " s (allowed: the checkpoint's spacing, " + format_number(spacing, 17) + " s, up to the new t_end)");
     };
@@ -73,7 +73,7 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
     const auto sample_time = [&](int n) { return n == options.samples ? options.t_end : t0 + span * n / options.samples; };
     const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
     if (!saves.resume(options.t_end, state)) record(t0);
-    else check_continuation(result, next_sample, sample_time, next_frame, frame_time);
+    else check_continuation(saves.path(), result, next_sample, sample_time, next_frame, frame_time);
     Progress progress("tumbler-kinematic", options.t_end, tumbler.time());
     BoundsMonitor step_bulk;
     std::vector<double> phi_after_bulk;  // kept only for an observer
