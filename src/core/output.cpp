@@ -87,7 +87,7 @@ void OutputSet::checkpoint(StateIO& io) {
     std::uint64_t n = files_.size();
     io("files", n);
     files_.resize(static_cast<std::size_t>(n));
-    for (auto& [path, content] : files_) io("file.path", path)("file.content", content);
+    for (auto& [path, content] : files_) io("file.path", path).blob("file.content", content);
 }
 
 void OutputSet::commit() const {

@@ -55,8 +55,20 @@ void unwatch_signals() {
 
 int stop_signal() { return requested.load(); }
 
-StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, RunTime* clock) {
-    StateIO io(c.block(block, path), path);
+StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, BlobStore* files,
+                     RunTime* clock) {
+    if (files && c.has("files")) {
+        StateIO in(c.block("files", path), path);
+        std::uint64_t n = 0;
+        in("files", n);
+        for (std::uint64_t i = 0; i < n; ++i) {
+            std::string key, text;
+            in("file.key", key)("file.text", text);
+            (*files)[key] = std::move(text);
+        }
+        in.expect_end();
+    }
+    StateIO io(c.block(block, path), path, files);
     RunTime spent;
     io("run.wall_seconds", spent.wall)("run.cpu_seconds", spent.cpu);
     if (clock) *clock = spent;
@@ -85,8 +97,8 @@ RunCheckpoints::~RunCheckpoints() {
     if (enabled()) unwatch_signals();
 }
 
-std::string RunCheckpoints::saved(const RunState& state) const {
-    StateIO io;
+std::string RunCheckpoints::saved(const RunState& state, BlobStore& files) const {
+    StateIO io(&files);
     double wall = earlier_.wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     double cpu = earlier_.cpu + run_cpu_seconds() - cpu_start_;
     io("run.wall_seconds", wall)("run.cpu_seconds", cpu);
@@ -94,13 +106,22 @@ std::string RunCheckpoints::saved(const RunState& state) const {
     return io.bytes();
 }
 
-Checkpoint RunCheckpoints::make(double t, long steps, bool finished, const std::string& bytes,
-                                const std::string& resume_bytes) const {
+Checkpoint RunCheckpoints::make(double t, long steps, bool finished, const std::string& bytes, const std::string& resume_bytes,
+                                BlobStore& blobs) const {
     Checkpoint c;
     c.kind = plan_.kind, c.program = build_identity(), c.scene = hash_text(plan_.settings);
     c.t = t, c.steps = steps, c.finished = finished;
     c.blocks = {{"scene", plan_.settings}, {"state", bytes}};
     if (!resume_bytes.empty()) c.blocks.emplace_back("resume", resume_bytes);
+    // The output files the states name, once.
+    StateIO files;
+    std::uint64_t n = blobs.size();
+    files("files", n);
+    for (auto& [key, text] : blobs) {
+        std::string k = key;
+        files("file.key", k)("file.text", text);
+    }
+    c.blocks.emplace_back("files", files.bytes());
     return c;
 }
 
@@ -148,8 +169,9 @@ bool RunCheckpoints::resume(double t_end, const RunState& state) {
     const bool extend = c.finished && t_end > c.t && c.has("resume");
     if (!extend && t_end < c.t)
         return refuse("its state is at t = " + format_number(c.t, 17) + " s, after this scene's t_end = " + format_number(t_end, 17) + " s");
-    if (c.finished && !extend && c.has("resume")) kept_ = c.block("resume", plan_.path);
-    StateIO io = runner_state(c, extend ? "resume" : "state", plan_.path, &earlier_);
+    BlobStore files;
+    StateIO io = runner_state(c, extend ? "resume" : "state", plan_.path, &files, &earlier_);
+    if (c.finished && !extend && c.has("resume")) kept_ = c.block("resume", plan_.path), kept_files_ = files;
     state(io);
     io.expect_end();
     return true;
@@ -158,7 +180,8 @@ bool RunCheckpoints::resume(double t_end, const RunState& state) {
 void RunCheckpoints::before_step(double t, double t_end, double longest_step, const RunState& state) {
     if (!enabled() || t + longest_step < t_end) return;
     const auto t0 = std::chrono::steady_clock::now();
-    kept_ = saved(state);
+    kept_files_.clear();
+    kept_ = saved(state, kept_files_);
     spent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -174,7 +197,9 @@ void RunCheckpoints::after_step(double t, long steps, const RunState& state) {
         ~Account() { spent += std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); }
     } account{spent_, now};
     try {
-        write(make(t, steps, false, saved(state), ""));
+        BlobStore files;
+        const std::string bytes = saved(state, files);
+        write(make(t, steps, false, bytes, "", files));
     } catch (const InputError& e) {
         if (!signal) {
             std::fprintf(stderr, "granseg: %s; the run goes on\n", e.what());
@@ -198,7 +223,9 @@ void RunCheckpoints::finish(double t, long steps, const RunState& state) {
     if (!enabled()) return;
     const auto t0 = std::chrono::steady_clock::now();
     try {
-        write(make(t, steps, true, saved(state), kept_));
+        BlobStore files = kept_files_;
+        const std::string bytes = saved(state, files);
+        write(make(t, steps, true, bytes, kept_, files));
     } catch (const InputError& e) {
         std::fprintf(stderr, "granseg: %s; the outputs are written all the same\n", e.what());
     }

@@ -21,7 +21,8 @@
 // no longer run's path: before a step that may end the run (t + longest_step >= t_end) the state
 // is kept in memory, and finish() writes both, the state at t_end ("state": to start other runs
 // from, or to write the outputs again) and the state before the last step ("resume": to extend
-// the run to a later t_end along the path of a run made with that t_end from the start).
+// the run to a later t_end along the path of a run made with that t_end from the start). The
+// output files the states hold (StateIO::blob) go once into the block "files".
 #pragma once
 
 #include "core/checkpoint_file.hpp"
@@ -86,10 +87,12 @@ public:
     RunTime earlier() const { return earlier_; }
 
 private:
-    /// A checkpoint of the state `bytes` at t.
-    Checkpoint make(double t, long steps, bool finished, const std::string& bytes, const std::string& resume_bytes) const;
-    /// The state as bytes, with the run's wall and CPU seconds so far.
-    std::string saved(const RunState& state) const;
+    /// A checkpoint of the state `bytes` at t (and `resume_bytes`, the state before the last step),
+    /// with the output files `blobs` they name.
+    Checkpoint make(double t, long steps, bool finished, const std::string& bytes, const std::string& resume_bytes,
+                    BlobStore& blobs) const;
+    /// The state as bytes, with the run's wall and CPU seconds so far; its output files go to `files`.
+    std::string saved(const RunState& state, BlobStore& files) const;
     /// Refuses the checkpoint `c` (Resume::yes: InputError; if_compatible: a note on stderr) and returns false.
     bool refuse(const std::string& why) const;
     /// Why `c` cannot continue this run ("" if it can).
@@ -98,7 +101,8 @@ private:
     void write(const Checkpoint& c);
 
     CheckpointPlan plan_;
-    std::string kept_;  // the state before a step that may end the run
+    std::string kept_;      // the state before a step that may end the run
+    BlobStore kept_files_;  // the output files it names (StateIO::blob)
     std::chrono::steady_clock::time_point start_, last_;
     double cpu_start_ = 0.0;
     RunTime earlier_;
@@ -110,8 +114,11 @@ private:
 int stop_signal();
 
 /// Block `block` ("state", "resume") of checkpoint `c` (read from `path`) as a StateIO at the
-/// runner's first member; `clock` (if given) gets the run's wall and CPU seconds saved before it.
-StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, RunTime* clock = nullptr);
+/// runner's first member, reading its output files from `files` (filled from the checkpoint; null:
+/// a state read only as far as its solver); `clock` (if given) gets the run's wall and CPU seconds
+/// saved before it.
+StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, BlobStore* files = nullptr,
+                     RunTime* clock = nullptr);
 
 /// `checkpoints`, or if null a plan without checkpoints (shared: it changes nothing), so that a
 /// time loop calls the same functions with and without.

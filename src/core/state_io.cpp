@@ -1,5 +1,6 @@
 #include "core/state_io.hpp"
 
+#include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
 
 #include <cstdint>
@@ -10,8 +11,27 @@ namespace granseg {
 // Each value: the name's length (2 bytes) and the name, the element size (4 bytes), the element
 // count (8 bytes), then the elements' bytes as they are in memory.
 
-StateIO::StateIO(std::string bytes, std::string source)
-    : restoring_(true), bytes_(std::move(bytes)), source_(std::move(source)) {}
+StateIO::StateIO(std::string bytes, std::string source, const BlobStore* blobs)
+    : restoring_(true), stored_(blobs), bytes_(std::move(bytes)), source_(std::move(source)) {}
+
+StateIO& StateIO::blob(const char* name, std::string& text) {
+    if (!restoring_ && !blobs_) return (*this)(name, text);
+    if (restoring_ && !stored_) return (*this)(name, text);
+    std::string key;
+    if (!restoring_) {
+        // The key: the contents' hash and length, and a suffix in the (unlikely) case two texts share them.
+        key = hash_text(text) + ":" + std::to_string(text.size());
+        for (auto it = blobs_->find(key); it != blobs_->end() && it->second != text; it = blobs_->find(key)) key += "+";
+        blobs_->emplace(key, text);
+    }
+    (*this)((std::string(name) + ".key").c_str(), key);  // another name than a text saved as a member
+    if (restoring_) {
+        const auto it = stored_->find(key);
+        if (it == stored_->end()) fail("the state names a file \"" + key + "\" that the checkpoint does not hold");
+        text = it->second;
+    }
+    return *this;
+}
 
 void StateIO::fail(const std::string& what) const {
     throw InputError(source_ + ": " + what + " (allowed: a checkpoint of this scene written by this build of granseg)");

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -55,12 +56,17 @@ template <class T, class A>
 struct is_vector<std::vector<T, A>> : std::true_type {};
 }  // namespace state_io_detail
 
+/// Large texts that several states share (the output files a run has made: the state before the
+/// last step and the final one hold the same), each kept once, by a key of its contents.
+using BlobStore = std::map<std::string, std::string>;
+
 class StateIO {
 public:
-    /// Saving: the values go into bytes().
-    StateIO() = default;
-    /// Restoring from `bytes`; `source` names them in messages (the checkpoint file).
-    StateIO(std::string bytes, std::string source);
+    /// Saving: the values go into bytes(); blobs (below) into `blobs` if given.
+    explicit StateIO(BlobStore* blobs = nullptr) : blobs_(blobs) {}
+    /// Restoring from `bytes`; `source` names them in messages (the checkpoint file); blobs from
+    /// `blobs` if the state was saved with a store.
+    StateIO(std::string bytes, std::string source, const BlobStore* blobs = nullptr);
 
     bool restoring() const { return restoring_; }
 
@@ -88,6 +94,10 @@ public:
         return *this;
     }
 
+    /// Saves or restores a large text (an output file) as a blob: with a store, the state holds
+    /// its key and the store its contents, once for every state that has it; else as a member.
+    StateIO& blob(const char* name, std::string& text);
+
     /// The saved bytes.
     const std::string& bytes() const { return bytes_; }
     /// Restoring: InputError unless every saved value was read.
@@ -101,6 +111,8 @@ private:
     [[noreturn]] void fail(const std::string& what) const;
 
     bool restoring_ = false;
+    BlobStore* blobs_ = nullptr;               // saving
+    const BlobStore* stored_ = nullptr;        // restoring
     std::string bytes_;
     std::string source_;
     std::size_t at_ = 0;        // restoring: read position in bytes_
