@@ -316,7 +316,8 @@ DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig
 # The Fig. 7 study's figures come from a benchmark, Fig. 7c/7d at 100 cells from make fig7's run:
 # drawn when their data is there (make bench BENCH=bench_fig7_convergence, make fig7), else left as
 # they are.
-DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work full_fig7c_tumbler full_fig7d_tumbler bench_drum_shapes
+DOC_BENCH_FIGURES := bench_fig7_convergence bench_fig7_work full_fig7c_tumbler full_fig7d_tumbler full_fig7cd_tumbler \
+                     bench_drum_shapes
 
 docs-figures: deps
 	@$(MAKE) --no-print-directory $(PAR) $(LIB) $(CLI) $(VERIFY_BIN)
@@ -352,7 +353,9 @@ $(RUNS)/%.seconds: verification/scenes/%.toml $(CLI)
 
 # `make fig7`: the paper's coupled drum (verification/scenes/tumbler.toml, 100 cells per diameter,
 # 25 s, default time stepping) run once, then Fig. 7a-d and the animation from it
-# (figures/full_fig7*.gp); figures-full reuses the run. Prints the run's and the command's wall time.
+# (figures/full_fig7*.gp); figures-full reuses the run. Prints the Fig. 7 numbers of the run and
+# writes them and the run's cost as tables (verification/fig7_tables.awk: $(RUNS)/fig7_run.md,
+# fig7_cost.md, shown by README.md), then the run's and the command's wall time.
 FIG7_PNG := $(filter $(BUILD)/figures/full_fig7%,$(FULL_PNG))
 fig7: deps
 	@start=$$(date +%s); \
@@ -361,6 +364,8 @@ fig7: deps
 	run=$$(cat $(RUNS)/tumbler.seconds); \
 	if [ $$(stat -c %Y $(RUNS)/tumbler.seconds) -ge $$start ]; then how="this run"; else how="an earlier run, reused"; fi; \
 	echo "fig7: Fig. 7a-d and the animation in $(BUILD)/figures/full_fig7*_tumbler.png (+ .gif) from $(RUNS)/tumbler"; \
+	awk -v cost=$(RUNS)/fig7_cost.md -f verification/fig7_tables.awk $(RUNS)/tumbler/summary.dat > $(RUNS)/fig7_run.md; \
+	sed -n 's/^| \(.*\) | \(.*\) |$$/fig7: \1: \2/p' $(RUNS)/fig7_run.md | tail -n +2; \
 	echo "fig7: the drum run took $$run s wall ($$how); make fig7 took $$(( $$(date +%s) - start )) s"
 
 # ---- the two commands --------------------------------------------------------------------------

@@ -234,7 +234,6 @@ void continues_to_the_bit(CoupledTumblerSetup setup, int before, int after, int 
     BOOST_TEST((save(resumed) == bytes));
     for (int n = 0; n < after; ++n) run.step(), resumed.step();
     omp_set_num_threads(was);
-    run.synchronise(), resumed.synchronise();
     const auto a = observed(run), b = observed(resumed);
     long differ = 0;
     for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];  // vector ==: bit for bit but NaN

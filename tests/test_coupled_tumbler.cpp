@@ -1,7 +1,8 @@
 // The coupled drum's pieces on small grids: the bulk step written like the mass balance (a uniform
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
-// repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, a passive
-// tracer riding in a segregating drum, and a drum of one phase only.
+// repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, the
+// segregation sub-step in every flow step, the flow without packing feedback as the flow alone, a
+// passive tracer riding in a segregating drum, and a drum of one phase only.
 #include "flow_run/bed.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
@@ -129,6 +130,42 @@ BOOST_AUTO_TEST_CASE(either_transport_keeps_both_phases_and_the_bounds_while_seg
     double differ = 0.0;
     for (std::size_t c = 0; c < phi_of[0].size(); ++c) differ = std::max(differ, std::fabs(phi_of[0][c] - phi_of[1][c]));
     BOOST_TEST(differ > 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(the_segregation_sub_step_covers_every_flow_step) {
+    // With packing feedback Phi_rcp and Phi_co follow phi_hat: a segregation sub-step that covered a
+    // stretch of time of its own (several flow steps at once) changed them in jumps that one flow
+    // step absorbed, an error that did not vanish with dt (assumption C1). Every flow step takes one
+    // sub-step over its own dt, so the amount phi_hat moves per step shrinks with dt.
+    CoupledTumblerSetup setup;
+    setup.drum.cells_per_diameter = 26;
+    CoupledTumbler tumbler(setup);
+    for (int n = 0; n < 100; ++n) tumbler.step();
+    BOOST_TEST(tumbler.segregation_substeps() == tumbler.flow().steps());
+    BOOST_TEST(tumbler.segregation_steps() >= tumbler.flow().steps());
+}
+
+BOOST_AUTO_TEST_CASE(without_packing_feedback_the_flow_is_the_flow_alone) {
+    // The flow does not see phi when Phi_rcp and Phi_co keep the initial mixture's values (C3): the
+    // coupled drum's Phi and u are bitwise those of the flow solver alone on the same drum (the
+    // tumbler-flow scene's set-up), so the time-step study reads the flow alone's angle from it.
+    CoupledTumblerSetup setup;
+    setup.drum.cells_per_diameter = 26;
+    setup.packing_feedback = false;
+    CoupledTumbler tumbler(setup);
+    FlowSettings settings = setup.flow;
+    settings.phi_hat = tumbler.initial_mixture();
+    const Grid grid = setup.drum.grid();
+    FlowSolver alone(grid, setup.material, settings, setup.drum.frame());
+    const std::vector<double> zero(grid.cells(), 0.0), T(grid.cells(), settings.T_floor);
+    alone.set_state(drum_bed_at_rest(setup.drum, grid, setup.material, settings.phi_hat, settings.T_floor), {zero, zero, zero}, T);
+    for (int n = 0; n < 100; ++n) tumbler.step(), alone.step();
+    BOOST_TEST(alone.time() == tumbler.time());
+    long differ = 0;
+    for (std::size_t c = 0; c < grid.cells(); ++c)
+        differ += alone.Phi()[c] != tumbler.flow().Phi()[c] || alone.u(0)[c] != tumbler.flow().u(0)[c] ||
+                  alone.u(2)[c] != tumbler.flow().u(2)[c] || alone.T()[c] != tumbler.flow().T()[c];
+    BOOST_TEST(differ == 0);
 }
 
 // A passive tracer in the full model (S = 1, packing feedback): it does not act on the flow or on

@@ -7,6 +7,10 @@
 //     the scratch's own) and exits with the status its fence names; every ```output block right
 //     after it is printed, line by line in order, numbers to the precision the page shows
 //     (harness/doc_blocks.hpp);
+//   - every value span (<!-- value: SOURCE -->0.936<!-- /value -->) shows its source's number to
+//     the precision the page writes, and no page but docs/history.md states a number in its prose
+//     outside a span, a block or a declared input (the ```inputs block of docs/checked_pages.md;
+//     harness/doc_values.hpp, harness/doc_prose.hpp); every declared input is used;
 //   - every generated block equals its committed copy docs/generated/NAME.md, and that copy
 //     equals the program's fresh output build/data/NAME.md or build/bench-data/NAME.md when one
 //     exists; every committed copy is shown by some page;
@@ -21,19 +25,26 @@
 //   - the checker itself (mutation self-checks): every expected line with a number, its last
 //     number moved by one unit of its last digit, must no longer agree with the line it matched;
 //     every generated block with one digit changed must differ from its copy; every recorded
-//     figure with one data digit changed must get another fingerprint; and the history,
+//     figure with one data digit changed must get another fingerprint; every value span with its
+//     last digit moved must disagree with its source; the number check must flag hand-typed
+//     samples and pass declared, spanned and code ones; and the history,
 //     outside-reference and name detectors must flag samples of what they look for (invented
 //     names among them) and pass samples of what exists.
 // Run: build/verification/verify_docs [--data DIR]   (make verify runs it after every other
 // verification program, whose results and data files some blocks and the figure check read;
-// about 20 s, most of it the tutorial's blocks). Two more modes, used by make targets:
-//   verify_docs --refresh            copy fresh generated tables into docs/generated/ and the pages
+// about 20 s, most of it the tutorial's blocks). Three more modes:
+//   verify_docs --refresh            copy fresh generated tables into docs/generated/ and the
+//                                    pages, then rewrite every value span (make docs-refresh)
 //   verify_docs --fingerprint NAME.. record the fingerprints of reference figures just drawn
+//   verify_docs --numbers            only the value spans and the numbers in prose (a second)
 #include "harness/check_table.hpp"
 #include "harness/doc_blocks.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
 #include "harness/doc_names.hpp"
+#include "harness/doc_prose.hpp"
+#include "harness/doc_refresh.hpp"
+#include "harness/doc_values.hpp"
 #include "harness/program.hpp"
 
 #include <unistd.h>
@@ -67,13 +78,6 @@ struct Repository {
 };
 
 std::string finding_line(const Finding& f) { return "  line " + std::to_string(f.line) + ": " + f.what + ": " + f.text; }
-
-/// Fresh output of the program that writes table NAME, if it has run.
-fs::path fresh_table(const Repository& repo, const std::string& name) {
-    for (const char* dir : {"data", "bench-data"})
-        if (fs::exists(repo.build / dir / name)) return repo.build / dir / name;
-    return {};
-}
 
 /// History, outside references, links and names of one page (history.md may name what was).
 void check_hygiene(CheckTable& t, const Repository& repo, const TreeNames& tree, const std::string& page,
@@ -137,6 +141,67 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
     }
 }
 
+struct NumberCounts {
+    long spans = 0, mutants_agreeing = 0;
+    std::vector<long> uses;  // per declared input, its matches on all pages
+};
+
+/// The value spans of one page against their sources, and its prose for numbers typed by hand.
+void check_numbers(CheckTable& t, const Repository& repo, const std::string& page, const std::string& text,
+                   const std::vector<DeclaredInput>& inputs, NumberCounts& n) {
+    std::string error;
+    const auto spans = resolved_spans(text, repo.root, repo.build, error);
+    t.count(page + ": malformed value spans", error.empty() ? 0 : 1, 0);
+    if (!error.empty()) t.note("  " + error);
+    long wrong = 0;
+    for (const ResolvedSpan& r : spans) {
+        const auto shown = shown_number(r.span.text);
+        const std::string where = "  line " + std::to_string(r.span.line) + ": ";
+        if (!shown || !r.value) {
+            ++wrong;
+            t.note(where + (shown ? r.error : "the span shows no number: \"" + r.span.text + "\"") + " [" + r.span.source + "]");
+            continue;
+        }
+        ++n.spans;
+        if (!shows(*shown, *r.value)) {
+            ++wrong;
+            t.note(where + "the page shows " + r.span.text + ", its source " + rendered_like(*r.value, r.span.text) + " (" +
+                   granseg::verify::format(*r.value) + ") [" + r.span.source + "]; make docs-refresh rewrites it");
+        } else {
+            n.mutants_agreeing += shows({shown->value + shown->unit, shown->unit}, *r.value);
+        }
+    }
+    t.count(page + ": value spans that disagree with their source (of " + std::to_string(spans.size()) + ")", wrong, 0);
+    std::vector<long> uses;
+    const auto typed = hand_typed_numbers(text, page, inputs, uses);
+    for (std::size_t i = 0; i < uses.size(); ++i) n.uses[i] += uses[i];
+    t.count(page + ": numbers typed by hand in prose (no span, block or declared input)", static_cast<long>(typed.size()), 0);
+    for (const auto& f : typed) t.note(finding_line(f));
+}
+
+/// The declared inputs (the ```inputs block of docs/checked_pages.md).
+std::vector<DeclaredInput> read_inputs(CheckTable& t, const Repository& repo) {
+    std::string error;
+    auto inputs = declared_inputs(read_text(repo.root / "docs" / "checked_pages.md"), error);
+    t.count("docs/checked_pages.md: inputs block readable", error.empty() ? 1 : 0, 1);
+    if (!error.empty()) t.note("  " + error);
+    return inputs;
+}
+
+/// Every declaration is used, and the number check flags a result typed by hand and passes what
+/// a page may hold.
+void check_number_rules(CheckTable& t, const std::vector<DeclaredInput>& inputs, const NumberCounts& n) {
+    long unused = 0;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (n.uses[i] == 0) ++unused, t.note("  docs/checked_pages.md line " + std::to_string(inputs[i].line) + ": no page uses " + inputs[i].expression);
+    t.count("declared inputs that no page uses (of " + std::to_string(inputs.size()) + ")", unused, 0);
+    const std::string typed = "the angle is 23.40 deg\nthe run took 132 s, 93 % of it in 12,503 steps\n";
+    const std::string allowed = "Sect. 4.2 and `dt = 0.5` and <!-- value: docs/x.md \"y\" -->0.936<!-- /value -->\n```\n0.25\n```\n";
+    std::vector<long> ignored;
+    t.count("number self-check: hand-typed sample numbers flagged (of 4)", static_cast<long>(hand_typed_numbers(typed, "docs/x.md", inputs, ignored).size()), 4);
+    t.count("number self-check: declared, spanned and code numbers flagged", static_cast<long>(hand_typed_numbers(allowed, "docs/x.md", inputs, ignored).size()), 0);
+}
+
 /// The text with its first digit changed (the generated-block self-check).
 std::string one_digit_changed(std::string s) {
     const auto at = s.find_first_of("0123456789");
@@ -169,9 +234,10 @@ void check_generated(CheckTable& t, const Repository& repo, const std::string& p
         t.count(where + ": block equals docs/generated/" + g.name, found && copy == g.text ? 0 : 1, 0);
         if (g.text.find_first_of("0123456789") != std::string::npos) mutants_equal += one_digit_changed(g.text) == copy;
         shown.push_back(g.name);
-        const fs::path fresh = fresh_table(repo, g.name);
-        if (fresh.empty()) {
-            t.note("  " + g.name + ": no fresh output in build/ (its program has not run); committed copy used");
+        const fs::path fresh = fresh_table(repo.build, g.name);
+        if (fresh.empty() || !compared(g.name)) {
+            t.note("  " + g.name + (fresh.empty() ? ": no fresh output in build/ (its program has not run); committed copy used"
+                                                  : ": a run's cost, the machine's: not compared (make docs-refresh copies it)"));
             continue;
         }
         t.count(where + ": committed copy equals fresh " + fresh.lexically_relative(repo.build).string() + " (else make docs-refresh)",
@@ -276,24 +342,6 @@ Repository find_repository(const char* argv0) {
     return repo;
 }
 
-/// --refresh: every generated table whose program has run is copied into docs/generated/ and
-/// into the blocks of every page that shows it.
-int refresh(const Repository& repo) {
-    for (const auto& e : fs::directory_iterator(repo.root / "docs" / "generated")) {
-        const std::string name = e.path().filename().string();
-        const fs::path fresh = fresh_table(repo, name);
-        if (fresh.empty()) continue;
-        const std::string text = read_text(fresh);
-        granseg::write_file_atomically(e.path().string(), text);
-        for (const std::string& page : repo.pages) {
-            const std::string before = read_text(repo.root / page), after = with_generated(before, name, text);
-            if (after != before) granseg::write_file_atomically((repo.root / page).string(), after);
-        }
-        std::cout << "docs-refresh: " << name << " from " << fresh.string() << '\n';
-    }
-    return 0;
-}
-
 /// --fingerprint NAME...: records the fingerprints of reference figures just drawn.
 int record_fingerprints(const Repository& repo, const std::vector<std::string>& names, const fs::path& data_dir) {
     const fs::path file = repo.root / "docs" / "figures" / "fingerprints.txt";
@@ -316,13 +364,23 @@ int main(int argc, char** argv) {
     const Repository repo = find_repository(argv[0]);
     if (argc > 1 && (std::strcmp(argv[1], "--refresh") == 0 || std::strcmp(argv[1], "--fingerprint") == 0)) {
         if (repo.root.empty()) return 2;
-        if (std::strcmp(argv[1], "--refresh") == 0) return refresh(repo);
+        if (std::strcmp(argv[1], "--refresh") == 0) return refresh_pages(repo.root, repo.build, repo.pages);
         return record_fingerprints(repo, std::vector<std::string>(argv + 2, argv + argc), repo.build / "data");
     }
-    const ProgramOptions options = parse_program_options(argc, argv);
+    const bool numbers_only = argc > 1 && std::strcmp(argv[1], "--numbers") == 0;
+    const ProgramOptions options = parse_program_options(numbers_only ? 1 : argc, argv);
     CheckTable t("docs: every page checked against the programs (docs/checked_pages.md)");
     t.count("docs/tutorial.md found above the build directory", !repo.root.empty(), 1);
     if (repo.root.empty()) return t.finish();
+    const std::vector<DeclaredInput> inputs = read_inputs(t, repo);
+    NumberCounts numbers;
+    numbers.uses.assign(inputs.size(), 0);
+    for (const std::string& page : repo.pages)
+        if (page != "docs/history.md") check_numbers(t, repo, page, read_text(repo.root / page), inputs, numbers);
+    check_number_rules(t, inputs, numbers);
+    t.note(std::to_string(numbers.spans) + " value spans agree with their sources");
+    t.count("self-check: value spans still agreeing with one digit changed", numbers.mutants_agreeing, 0);
+    if (numbers_only) return t.finish();
 
     const fs::path scratch = fs::temp_directory_path() / ("granseg_docs_" + std::to_string(::getpid()));
     fs::create_directories(scratch / "out");

@@ -58,7 +58,6 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
     s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);
     s.packing_feedback = scene.flag("coupling", "packing_feedback", s.packing_feedback);
-    s.bulk_cfl = scene.number("coupling", "bulk_cfl", Range::left_open(0, 1), s.bulk_cfl);
     if (scene.has("coupling", "mixture")) {
         if (s.packing_feedback)
             scene.fail("coupling", "mixture", "a fixed mixture with packing_feedback = true",

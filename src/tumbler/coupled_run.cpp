@@ -153,7 +153,6 @@ bool CoupledRecord::due(double next) const {
 void CoupledRecord::sample() {
     const bool vtk = options_.run.vtk && due(next_snapshot_);
     if (!due(next_history_) && !vtk && !due(next_frame_)) return;
-    tumbler_.synchronise();
     if (due(next_history_)) record_history();
     if (vtk) {
         next_snapshot_ += options_.run.snapshot_every;

@@ -67,7 +67,6 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
     if (!flow_.grid().inside.empty()) inside_ = flow_.grid().inside;
     if (transport_scheme(setup.flow) == Transport::muscl) fct_.emplace(flow_.grid(), setup.flow.limiter);
     if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("tumbler: S must be finite and >= 0");
-    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("tumbler: bulk CFL outside (0, 1]");
     if (!preserves_bounds(setup.segregation.scheme))
         throw InputError("tumbler: the segregation scheme must keep 0 <= phi <= Phi (modified-godunov, -2)");
     const Grid& g = flow_.grid();
@@ -137,14 +136,12 @@ double CoupledTumbler::step(double t_end) {
     const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)
     auto t1 = clock::now();
     timers_.flow += seconds(t0, t1);
-    bulk_courant_ += transport(phi_, dt);  // 2. (eq. 65, F^bulk)
+    transport(phi_, dt);  // 2. (eq. 65, F^bulk)
     clip_bulk_round_off(phi_, "phi");
     if (!tracer_.empty()) transport(tracer_, dt), clip_bulk_round_off(tracer_, "the tracer");  // 2'.
     t0 = clock::now();
     timers_.bulk += seconds(t1, t0);
-    since_segregation_ += dt;  // (assumption C1)
-    if (since_segregation_ >= segregation_step_ || bulk_courant_ >= setup_.bulk_cfl || flow_.time() >= t_end)
-        segregate();  // 3. (eqs. 46, 47, 52b)
+    segregate(dt);  // 3. (eqs. 46, 47, 52b; assumption C1)
     t1 = clock::now();
     timers_.segregation += seconds(t0, t1);
     if (setup_.packing_feedback) flow_.set_phi_hat(phi_hat());  // 4. (eqs. 18, 19)
@@ -152,10 +149,10 @@ double CoupledTumbler::step(double t_end) {
     return dt;
 }
 
-double CoupledTumbler::transport(std::vector<double>& field, double dt) {
+void CoupledTumbler::transport(std::vector<double>& field, double dt) {
     const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
-    return fct_ ? fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, field, setup_.Phi_min)
-                : bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, field, setup_.Phi_min);
+    if (fct_) fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, field, setup_.Phi_min);
+    else bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, field, setup_.Phi_min);
 }
 
 void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char* name) {
@@ -223,16 +220,10 @@ void CoupledTumbler::update_segregation_velocity() {
     }
 }
 
-void CoupledTumbler::synchronise() {
-    if (since_segregation_ > 0.0) segregate();
-}
-
-void CoupledTumbler::segregate() {
+void CoupledTumbler::segregate(double dt) {
     update_segregation_velocity();
-    segregation_steps_ += segregation_.advance(frozen_, since_segregation_, phi_);  // (eq. 52b)
+    segregation_steps_ += segregation_.advance(frozen_, dt, phi_);  // (eq. 52b)
     ++substeps_;
-    segregation_step_ = segregation_.time_step(frozen_);  // (assumption C1)
-    since_segregation_ = 0.0, bulk_courant_ = 0.0;
 }
 
 }  // namespace granseg

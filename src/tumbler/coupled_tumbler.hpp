@@ -3,7 +3,7 @@
 //
 //   solves      eqs. (8), (9), (14) and (47) in the turning drum, coupled both ways, split as in eq. (65)
 //   inputs      CoupledTumblerSetup: the drum, the material, flow settings, S, the segregation options,
-//               Phi_min, bulk_cfl, packing feedback, phi_hat at t = 0
+//               Phi_min, packing feedback, phi_hat at t = 0
 //   outputs     after each step the flow's Phi, u, T and phi (phi_hat())
 //   invariants  the amount of each phase; 0 <= phi <= Phi after the bulk step and the segregation
 //               sub-step (round-off clips only); a uniform phi_hat stays uniform (coupled_run.hpp checks them)
@@ -19,29 +19,24 @@
 //      round-off. muscl: that donor-cell step plus the limited antidiffusion of a MUSCL-Hancock flux
 //      in phi_hat (FctBulkTransport, assumption T5), so phi_new/Phi_new stays within the local
 //      extremes of the old and the donor-cell phi_hat;
-//   3. segregation sub-step with Phi and T frozen (eq. 52b), when due (below): per cell
+//   3. segregation sub-step with Phi and T frozen (eq. 52b) over the same dt: per cell
 //      a = S^sl = -S0 sqrt(T) (d_s . g) d_s (eq. 46) with T from the flow and d_s (Sect. 2.3) from
 //      the flow's velocity gradient and its velocity, both relative to the drum, so the rotation
 //      of the frame does not enter d_s (docs/assumptions.md D3, C5); a = 0 where Phi < Phi_min
 //      (assumption C2). SegregationSolver::advance (split over the axes, the sign-robust flux of
-//      eq. 63, zero flux on every wall face) covers the time since the last sub-step in steps of
-//      its own CFL bound;
+//      eq. 63, zero flux on every wall face) covers dt in steps of its own CFL bound;
 //   2'. a passive tracer, if the setup has one: a second bulk field tau (0 <= tau <= Phi) carried by
 //      the same M with the same transport as phi, and nothing else (no segregation, no feedback):
 //      a dye that marks material, so that what leaves a region is measured in the model's own flow;
 //   4. closures from phi_hat: with packing feedback, Phi_rcp(phi_hat) and Phi_co(phi_hat) follow
 //      phi_hat cell by cell (FlowSolver::set_phi_hat; eqs. 18, 19); without, they keep the values
 //      of the initial mixture (assumption C3).
-// When the segregation sub-step is due (assumption C1): the flow's step is bounded by sound waves
-// (c ~ 6 m/s in the bed: dt ~ 8e-5 s at 1 mm cells), the segregation's by |a| ~ 0.1 m/s and the
-// bulk flow's by |u| ~ 0.3 m/s (a cell in ~3e-3 s). The sub-step is taken once the time since the
-// last one reaches the segregation's CFL step at the last sub-step, or once the bulk flow has
-// moved bulk_cfl of a segregating cell's content (the sum over the flow steps of
-// dt sum_out M/(h Phi_old), over cells with Phi >= Phi_min), whichever comes first, and at every
-// t_end a caller steps to: multi-rate Lie splitting, steps 1, 2 and 4 every flow step, step 3 at
-// its own pace, as in the kinematic drum whose step is min(bulk, segregation CFL step). When the
-// flow step is the longer one (a semi-implicit flow, a large S), the sub-step comes every flow
-// step and advance() sub-cycles it.
+// Every step takes all four parts (Lie splitting, first order in dt; assumption C1): the
+// segregation sub-step covers the flow's dt, so that the splitting error vanishes with dt. With
+// packing feedback each flow step then meets a change of Phi_rcp and Phi_co that is proportional
+// to its dt; a sub-step that covered a fixed stretch of time instead (at the segregation's own
+// pace) changed them in jumps that one flow step had to absorb, and made the drum's angle and its
+// pattern depend on dt without converging (docs/sect4.2_tumbler.md, "Time step").
 #pragma once
 
 #include "closures/material.hpp"
@@ -67,7 +62,6 @@ struct CoupledTumblerSetup {
     FlowSettings flow;               // its phi_hat is replaced by the initial mixture's
     double S = 1.0;                  // S0 of eq. (46), s/m (Sect. 4.2); 0: no segregation
     SegregationOptions segregation;  // scheme, limiter, cfl of the segregation sub-step
-    double bulk_cfl = 0.9;           // the bulk flow's share of the sub-step interval (C1)
     double Phi_min = 0.05;           // no segregation in cells with Phi below this (C2)
     bool packing_feedback = true;    // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
     /// Without packing feedback: the phi_hat whose Phi_rcp, Phi_co the closures keep; NaN: the
@@ -92,12 +86,9 @@ public:
     /// InvariantError if the bed is packed beyond Phi_rcp(phi_hat0) somewhere (packing feedback).
     explicit CoupledTumbler(const CoupledTumblerSetup& setup);
 
-    /// One coupled step (see above), not beyond t_end; the segregation is brought up to date
-    /// when the step ends at t_end. Returns the flow's dt. InvariantError on a broken invariant
-    /// of the flow, or if the bulk step leaves 0 <= phi <= Phi beyond round-off.
+    /// One coupled step (see above), not beyond t_end. Returns the flow's dt. InvariantError on a
+    /// broken invariant of the flow, or if the bulk step leaves 0 <= phi <= Phi beyond round-off.
     double step(double t_end = std::numeric_limits<double>::infinity());
-    /// Takes the segregation sub-step for the time since the last one, if any (before output).
-    void synchronise();
     /// Starts from another run's flow instead of the bed at rest: the flow solver's state from
     /// `flow_state` (a tumbler-flow's or a tumbler's checkpoint, core/state_io.hpp), its time and
     /// steps included; phi = phi_hat0 Phi and the tracer from tracer0 at the cells' lab positions
@@ -137,14 +128,13 @@ public:
 private:
     /// a = S^sl and d_s per cell from the flow's current fields (step 3).
     void update_segregation_velocity();
-    /// Step 3 over the time since the last sub-step.
-    void segregate();
+    /// Step 3 over dt.
+    void segregate(double dt);
     /// After the bulk step: `field` (phi or the tracer) back into [0, Phi] where rounding left it;
     /// InvariantError if by more than kBoundRoundOff times the cell's larger Phi (before or after).
     void clip_bulk_round_off(std::vector<double>& field, const char* name);
-    /// Step 2 for `field` with the flow's face mass fluxes: the share of a segregating cell's
-    /// material moved (BulkTransport::step).
-    double transport(std::vector<double>& field, double dt);
+    /// Step 2 for `field` with the flow's face mass fluxes.
+    void transport(std::vector<double>& field, double dt);
 
     /// phi_hat0 at the cells below the flat initial surface (0 elsewhere) and their mean (C3), or the
     /// setup's mixture in its place if given.
@@ -166,9 +156,6 @@ private:
     FrozenFields frozen_;
     std::array<std::vector<double>, 3> d_s_;
     std::vector<double> phi_, tracer_;
-    double since_segregation_ = 0.0;  // time since the last segregation sub-step
-    double segregation_step_ = 0.0;   // the segregation's CFL step at the last sub-step
-    double bulk_courant_ = 0.0;       // largest share of a segregating cell's material moved since then
     long substeps_ = 0, segregation_steps_ = 0;
     double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
     double largest_bulk_clip_ = 0.0;
@@ -176,13 +163,12 @@ private:
 
 public:
     /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: the flow, phi
-    /// and the tracer, the fields of the last segregation sub-step, the sub-step schedule, the
-    /// counts and extremes, the timers. The rest is set-up (built from the setup as before) or
+    /// and the tracer, the fields of the last segregation sub-step, the counts and extremes, the
+    /// timers. The rest is set-up (built from the setup as before) or
     /// scratch of a step. A member added above that outlives a step belongs here too.
     void checkpoint(StateIO& io) {
         io("tumbler.flow", flow_)("tumbler.segregation", segregation_)("tumbler.frozen", frozen_)("tumbler.d_s", d_s_);
-        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.since_segregation", since_segregation_);
-        io("tumbler.segregation_step", segregation_step_)("tumbler.bulk_courant", bulk_courant_)("tumbler.substeps", substeps_);
+        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.substeps", substeps_);
         io("tumbler.segregation_steps", segregation_steps_)("tumbler.max_excess", max_excess_)("tumbler.min_phi", min_phi_);
         io("tumbler.largest_bulk_clip", largest_bulk_clip_)("tumbler.timers", timers_);
     }

@@ -1,4 +1,4 @@
-// The coupled drum's own regions, for the Fig. 7 study (docs/sect4.2_tumbler.md, "Results"): where
+// The coupled drum's own regions, for the Fig. 7 study (docs/sect4.2_fig7_study.md): where
 // pattern_metrics.hpp takes the kinematic drum's regions (a layer kLayerShare D thick, cells counted
 // by their centres) so that the two drums compare, these follow the coupled run itself:
 //   core       r < d - delta:        material that never reaches the flowing layer, delta the run's

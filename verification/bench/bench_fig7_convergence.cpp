@@ -12,17 +12,17 @@
 //      weighing in (harness/grid_convergence.hpp, fig7_report.hpp);
 //   3. work against error: wall time against |value - reference|, and the cheapest run for a
 //      quick look, a figure and a paper (fig7_work.hpp);
-//   4. the paper's statements as checks on the finest run, bounds widened by their uncertainty,
-//      the share of steps dt_max set in every run, and the core's mechanisms (fig7_core.hpp): the
-//      one check table of this program.
-// Writes to DIR: fig7_runs.dat, fig7_convergence.dat/.md, fig7_work.dat/.md, fig7_core.md (the
-// .md files are ready for docs/generated/), and every run under fig7_convergence/ (its scene
+//   4. the share of steps dt_max set in every run and the paper's statements as checks on the
+//      finest run, bounds widened by their band (checks f-j, fig7_core.hpp: the one check table of
+//      this program), and the core's measured parts.
+// Writes to DIR: fig7_runs.dat, fig7_convergence.dat/.md, fig7_summary.md, fig7_work.dat/.md,
+// fig7_core.md, fig7_checks.md (the .md files are ready for docs/generated/), and every run under fig7_convergence/ (its scene
 // NAME.toml and its files NAME/); figures/bench_fig7_convergence.gp and bench_fig7_work.gp plot them.
 //
 // A study stopped (Ctrl-C, a job's time limit, a power cut) and run again with the same options skips
 // the runs that finished and resumes the others from their checkpoints (study/fig7_study.hpp).
 // Run: build/bench/bench_fig7_convergence [--data DIR] [options]    (--help lists them)
-//   the default is the real study, long (see docs/sect4.2_tumbler.md, "Results"); a test of
+//   the default is the real study, long (see docs/sect4.2_fig7_study.md); a test of
 //   everything in a few minutes:
 //   --cells 26,36,50,70 --transports muscl --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"

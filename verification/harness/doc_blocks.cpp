@@ -107,12 +107,21 @@ Tokens tokens_of(const std::string& line) {
     return t;
 }
 
+bool within_last_digit(double printed, double shown, double unit) {
+    return std::fabs(printed - shown) <= 0.5 * unit + kConversionSlack * std::fabs(shown);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
 bool agrees(const Tokens& printed, const Tokens& page) {
     if (printed.words != page.words || printed.numbers.size() != page.numbers.size()) return false;
-    for (std::size_t i = 0; i < page.numbers.size(); ++i) {
-        const double slack = 0.5 * page.units[i] + kConversionSlack * std::fabs(page.numbers[i]);
-        if (!(std::fabs(printed.numbers[i] - page.numbers[i]) <= slack)) return false;
-    }
+    for (std::size_t i = 0; i < page.numbers.size(); ++i)
+        if (!within_last_digit(printed.numbers[i], page.numbers[i], page.units[i])) return false;
     return true;
 }
 

@@ -38,6 +38,13 @@ struct Tokens {
 
 Tokens tokens_of(const std::string& line);
 
+/// True if a printed number agrees with the page's number `shown`, written with `unit` the unit of
+/// its last digit: |printed - shown| <= unit/2 (plus the decimal conversions' round-off).
+bool within_last_digit(double printed, double shown, double unit);
+
+/// The lines of a text.
+std::vector<std::string> lines_of(const std::string& text);
+
 /// True if the printed line agrees with the page's line (see the header).
 bool agrees(const Tokens& printed, const Tokens& page);
 

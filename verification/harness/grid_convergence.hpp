@@ -1,5 +1,5 @@
 // Solution verification: how far a quantity computed on the finest of several grids lies from the
-// same model's h -> 0 value, restated in docs/sect4.2_tumbler.md, section "Results".
+// same model's h -> 0 value, restated in docs/sect4.2_fig7_study.md, "The method".
 //
 // Grids 1 (finest) to n (coarsest), cell sizes h1 < ... < hn, values f_i with sampling errors s_i
 // (the standard error of a time average, or the jitter of a value read at one instant):

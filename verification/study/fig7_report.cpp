@@ -87,16 +87,28 @@ std::string series_text(const Fig7Estimate& e, const Fig7Analysis& a) {
     return e.series + ", dt ~ h";
 }
 
-/// The verdict on a quantity from its reference series.
+/// The direction refinement moves a series (fine to coarse values): "lowers it", "raises it", or
+/// "" where the differences change sign.
+std::string refinement_trend(const Fig7Estimate& e) {
+    bool up = true, down = true;
+    for (std::size_t i = 0; i + 1 < e.f.size(); ++i) up = up && e.f[i] > e.f[i + 1], down = down && e.f[i] < e.f[i + 1];
+    return up ? "each refinement raises it" : down ? "each refinement lowers it" : "";
+}
+
+/// The verdict on a quantity from its reference series; where the series does not converge, the
+/// direction refinement moves it (the sign of the finest value's bias, where it has one).
 std::string verdict(const Fig7Estimate& e) {
     const GridConvergence& g = e.g;
+    const std::string trend = refinement_trend(e);
     switch (g.condition) {
         case Convergence::monotone:
             return g.outside_bounds ? "limit outside the physical range: not established"
                                     : "converges (p = " + fig7_number(g.p, 3) + "), limit " + fig7_number(g.f0);
         case Convergence::within_noise: return "grid differences within the sampling errors: no trend resolved";
         case Convergence::two_grids: return "two grids: order assumed";
-        default: return convergence_name(g.condition) + ": range " + fig7_number(g.lo) + " – " + fig7_number(g.hi);
+        default:
+            return "not converged (" + convergence_name(g.condition) + (trend.empty() ? "" : "; " + trend) + "): range " +
+                   fig7_number(g.lo) + " – " + fig7_number(g.hi);
     }
 }
 
@@ -108,20 +120,25 @@ void write_fig7_summary(const Fig7Analysis& a, const Fig7Options& o) {
     const auto grid = a.runs(Fig7Kind::grid, false, a.reference_series);
     const auto paper = std::find_if(grid.begin(), grid.end(), [](const Fig7Result* r) { return r->run.cells == kPaperCells; });
     const Fig7Result& shown = paper != grid.end() ? **paper : a.finest();
+    const int fine = a.finest().run.cells;
     std::ostringstream md;
-    md << "| quantity | at " << shown.run.cells << " cells | limit | band of the " << a.finest().run.cells
-       << "-cell value | verdict |\n|---|---|---|---|---|\n";
+    md << "| quantity | at " << shown.run.cells << " cells | its distance to the limit | at " << fine << " cells | band of the "
+       << fine << "-cell value | its range | limit | verdict |\n|---|---|---|---|---|---|---|---|\n";
     for (int q = 0; q < kFig7Quantities; ++q) {
         const Fig7Quantity& quantity = fig7_quantities()[q];
         const Fig7Estimate& e = *a.find(q, a.reference_series);
         const bool limit = e.g.condition == Convergence::monotone && !e.g.outside_bounds;
+        const auto [lo, hi] = a.band_range(q);
         md << "| " << quantity.label << (std::string(quantity.unit) == "-" ? "" : " (" + std::string(quantity.unit) + ")") << " | "
-           << fig7_number(shown.value[q]) << " ± " << fig7_number(shown.sampling[q], 2) << " | " << (limit ? fig7_number(e.g.f0) : "–")
-           << " | " << fig7_number(a.band(q), 3) << " | " << verdict(e) << " |\n";
+           << fig7_number(shown.value[q]) << " ± " << fig7_number(shown.sampling[q], 2) << " | "
+           << (limit ? fig7_number(shown.value[q] - e.g.f0, 3) : "–") << " | " << fig7_number(a.finest().value[q]) << " | "
+           << fig7_number(a.band(q), 3) << " | " << fig7_number(lo, 4) << " – " << fig7_number(hi, 4) << " | "
+           << (limit ? fig7_number(e.g.f0) : "–") << " | " << verdict(e) << " |\n";
     }
     md << "\nWritten by `bench_fig7_convergence`: the " << a.reference_series << " transport, dt_max " << fig7_number(1e3 * o.dt_ref)
-       << " ms × 50/cells; ± after a value: its sampling error; band: the reference series' uncertainty plus the time-step "
-          "study's at the finest grid. Every series and number: `fig7_convergence.md`.\n";
+       << " ms × 50/cells; ± after a value: its sampling error; distance: the value minus the limit (its bias, where the series "
+          "converges); band: the reference series' uncertainty plus the time-step study's at the finest grid, and its range the "
+          "band clipped to the quantity's physical range. Every series and number: `fig7_convergence.md`.\n";
     write_file_atomically(o.data_dir + "/fig7_summary.md", md.str());
 }
 
@@ -174,6 +191,20 @@ double Fig7Analysis::band(int q) const {
     return find(q, reference_series)->g.uncertainty + (dt ? dt->g.uncertainty : 0.0);
 }
 
+std::pair<double, double> Fig7Analysis::band_range(int q) const {
+    const Fig7Quantity& quantity = fig7_quantities()[q];
+    const double f1 = finest().value[q];
+    return {std::max(quantity.lower, f1 - band(q)), std::min(quantity.upper, f1 + band(q))};
+}
+
+std::pair<double, double> clipped_band(const Fig7Estimate& e) {
+    const Fig7Quantity& quantity = fig7_quantities()[e.quantity];
+    const double f1 = e.f.front(), U = e.g.uncertainty;
+    return {std::max(quantity.lower, f1 - U), std::min(quantity.upper, f1 + U)};
+}
+
+double check_uncertainty(const Fig7Estimate& e) { return e.g.outside_bounds ? e.g.hi - e.g.lo : e.g.uncertainty; }
+
 Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& o) {
     Fig7Analysis a;
     a.results = std::move(results);
@@ -224,19 +255,21 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
                  "monotone, 1 oscillatory, 2 divergent, 3 within noise, 4 two grids, 5 undetermined; p, f0: least-squares "
                  "fit f = f0 + alpha h^p weighted by 1/se^2; p_u, fs: Roy's order and factor of safety; sigma: standard "
                  "deviation of the fit at p_u; U: uncertainty of f1 (harness/grid_convergence.hpp); e_a = |f1 - f2|/|f1|, "
-                 "e_ext = |f0 - f1|/|f0|; chi2 of a constant and its 95 % quantile; outside 1: f0 outside the physical range");
+                 "e_ext = |f0 - f1|/|f0|; chi2 of a constant and its 95 % quantile; outside 1: f0 outside the physical range; "
+                 "band_lo, band_hi: f1 -+ U clipped to the physical range");
     std::ostringstream md;
     md << "| quantity | series | values, fine to coarse | largest sampling error | condition | p | Fs (p_u) | limit f0 | "
-          "U of the finest | e_a | e_ext | flag |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "U of the finest | its range | e_a | e_ext | flag |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Fig7Estimate& e : a.estimates) {
         const GridConvergence& g = e.g;
+        const auto [band_lo, band_hi] = clipped_band(e);
         conv.row({{"quantity", static_cast<double>(e.quantity)},
                    {"series", static_cast<double>(series_code(e.series, a))},
                    {"runs", static_cast<double>(e.f.size())}, {"x1", 1e3 * e.h[0]}, {"f1", e.f[0]},
                    {"se_max", e.se_max}, {"condition", static_cast<double>(g.condition)}, {"p", g.p}, {"f0", g.f0},
                    {"p_u", g.p_u}, {"fs", g.fs}, {"sigma", g.sigma}, {"U", g.uncertainty}, {"e_a", g.e_a},
                    {"e_ext", g.e_ext}, {"chi2", g.chi2}, {"chi2_95", g.chi2_limit}, {"lo", g.lo}, {"hi", g.hi},
-                   {"outside", g.outside_bounds ? 1.0 : 0.0}});
+                   {"outside", g.outside_bounds ? 1.0 : 0.0}, {"band_lo", band_lo}, {"band_hi", band_hi}});
         const Fig7Quantity& q = quantities[e.quantity];
         std::string values;
         for (double f : e.f) values += (values.empty() ? "" : ", ") + fig7_number(f);
@@ -244,7 +277,8 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
         md << "| " << label << (std::string(q.unit) == "-" ? "" : " (" + std::string(q.unit) + ")") << " | " << series_text(e, a)
            << " | " << values << " | " << cell(e.se_max, 3) << " | " << condition_text(e) << " | " << cell(g.p, 4) << " | "
            << (std::isnan(g.fs) ? "–" : fig7_number(g.fs, 3) + " (" + fig7_number(g.p_u, 4) + ")") << " | " << cell(g.f0)
-           << " | " << cell(g.uncertainty, 4) << " | " << cell(g.e_a, 3) << " | " << cell(g.e_ext, 3) << " | " << flags_text(e)
+           << " | " << cell(g.uncertainty, 4) << " | " << cell(band_lo, 4) << " – " << cell(band_hi, 4) << " | " << cell(g.e_a, 3)
+           << " | " << cell(g.e_ext, 3) << " | " << flags_text(e)
            << " |\n";
     }
     std::string cells, explicit_cells;

@@ -16,6 +16,7 @@
 #include "harness/grid_convergence.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granseg::verify {
@@ -52,8 +53,15 @@ struct Fig7Analysis {
     /// (the dt study's, or the grid run without one).
     const Fig7Result& reference_run() const;
     /// The band of the finest grid run's value of `quantity`: the reference series' uncertainty
-    /// plus the dt study's at the finest grid (where the study has one).
+    /// plus the dt study's at the finest grid (where the study has one). Why both: the grid series
+    /// refines h and dt together, and its one fit assumes that their errors share one order; the
+    /// observed orders (not within 10 % of the formal order 1, so Fs = 3) say the series is not in
+    /// that asymptotic range, where a time error of another order could be absorbed into the fit
+    /// or cancel against the grid's. The dt study measures the time step's own effect at the
+    /// finest grid directly, and its uncertainty is added as that allowance.
     double band(int quantity) const;
+    /// The finest value's band f1 +- band(quantity), clipped to the quantity's physical range.
+    std::pair<double, double> band_range(int quantity) const;
 };
 
 /// The estimate of `quantity` over `runs` (fine to coarse) against their cell size, or with dt_axis
@@ -67,6 +75,13 @@ Fig7Analysis analyse_fig7(std::vector<Fig7Result> results, const Fig7Options& op
 /// Writes DIR/fig7_runs.dat (one row per run), DIR/fig7_convergence.dat (one row per quantity and
 /// series) and DIR/fig7_convergence.md (the same as a markdown table for docs/generated/).
 void write_fig7_convergence(const Fig7Analysis& analysis, const Fig7Options& options);
+
+/// An estimate's band f1 +- U clipped to the quantity's physical range.
+std::pair<double, double> clipped_band(const Fig7Estimate& e);
+
+/// The uncertainty a check may use: the series' U, unless its fit is rejected (its limit lies
+/// outside the physical range), then the range of its values, which rests on no fit.
+double check_uncertainty(const Fig7Estimate& e);
 
 /// Formats a number with `digits` significant digits ("nan" for NaN).
 std::string fig7_number(double v, int digits = 6);

@@ -62,11 +62,14 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
            << fig7_number(r->cpu, 4) << " | " << err(kAngle) << " | " << err(kIndex) << " | " << err(kLayer) << " | " << err(kCore)
            << " |\n";
     }
+    double total_cpu = 0;
+    for (const Fig7Result& r : a.results) total_cpu += r.cpu;
     md << "\nReference: the finest grid's smallest-dt run (" << run_text(ref) << ", " << fig7_number(ref.cpu, 4)
        << " s CPU), with its band (grid plus dt uncertainty): angle " << fig7_number(ref.value[kAngle]) << " +- "
        << fig7_number(a.band(kAngle), 3) << " deg, index " << fig7_number(ref.value[kIndex]) << " +- "
        << fig7_number(a.band(kIndex), 3) << ". Time: CPU seconds of all threads, one run each; an error marked (<= band) "
-       << "is within the reference's own uncertainty and ranks nothing.\n\n";
+       << "is within the reference's own uncertainty and ranks nothing. The whole study: " << a.results.size() << " runs, "
+       << fig7_number(total_cpu / 3600.0, 3) << " CPU-hours.\n\n";
 
     std::vector<std::string> answers;
     const double angle_u = a.band(kAngle), index_u = a.band(kIndex);
