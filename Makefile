@@ -37,13 +37,13 @@ STUDY_SRC   := $(sort $(wildcard verification/study/*.cpp))
 VERIFY_SRC  := $(sort $(wildcard verification/verify_*.cpp))
 BENCH_SRC   := $(sort $(wildcard verification/bench/bench_*.cpp))
 TEST_SRC    := $(sort $(wildcard tests/*.cpp))
-# The flow solver and the linear algebra under it (compiled with two more flags, below).
-FLOW_SRC    := $(filter src/flow% src/linalg/%,$(LIB_SRC))
+FLOW_SRC    := $(filter src/flow% src/linalg/%,$(LIB_SRC))  # the flow solver (two more flags, below)
 
 # ---- objects: one per source file, under $(BUILD)/obj (mk/unity.mk makes it one per folder) ----
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
 EMBED_SRC   := $(BUILD)/gen/embedded_data.cpp
-LIB_OBJ     := $(call obj,$(LIB_SRC) $(EMBED_SRC))
+ID_SRC      := $(BUILD)/gen/build_identity.cpp
+LIB_OBJ     := $(call obj,$(LIB_SRC) $(EMBED_SRC) $(ID_SRC))
 CLI_OBJ     := $(call obj,$(CLI_SRC))
 HARNESS_OBJ := $(call obj,$(HARNESS_SRC))
 STUDY_OBJ   := $(call obj,$(STUDY_SRC))
@@ -85,22 +85,22 @@ deps $(BUILD)/.deps-ok:
 	@mkdir -p $(BUILD) && touch $(BUILD)/.deps-ok
 
 # ---- compilation -------------------------------------------------------------------------------
-# The one compile rule: every source file (ours, and the generated ones under $(BUILD)) to its
-# object; -MMD writes the headers it included beside it (read at the end of this file).
+# The one compile rule (generated sources too); -MMD lists each object's headers (read at the end).
 $(BUILD)/obj/%.o: %.cpp | $(BUILD)/.deps-ok
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
 
-# The flow solver's loops (src/flow*/, src/linalg/) vectorise only if sqrt need not set errno and
-# FP operations may run speculatively: neither flag changes a computed value (docs/flow_solver.md).
+# The flow solver's loops vectorise only with these flags, which change no value (docs/flow_solver.md).
 $(FLOW_OBJ): CXXFLAGS += -fno-math-errno -fno-trapping-math
 
-# The data files under src/ (packing tables) go into the library: binaries work from any folder.
+# Generated sources: the data files under src/ (packing tables), so that binaries work from any
+# folder, and the build's identity, which checkpoints carry (rewritten only when it changes).
 $(EMBED_SRC): $(DATA_FILES) tools/embed_data.sh
 	tools/embed_data.sh $@ $(DATA_FILES)
+$(ID_SRC): FORCE
+	@tools/build_identity.sh $@ $(CXX) $(CXXFLAGS)
 
-# A source file removed from a folder must take its object out of the library and the test
-# program: these lists change when the object lists do (FORCE: always checked), and relink.
+# A removed source file leaves the library and the tests: these lists change, and relink.
 $(BUILD)/lib-objects.list $(BUILD)/test-objects.list: FORCE
 	@mkdir -p $(@D)
 	@echo '$(if $(findstring lib-,$@),$(LIB_OBJ),$(TEST_OBJ))' | cmp -s - $@ || \

@@ -22,7 +22,7 @@ ifeq ($(UNITY),1)
 unit_src = $(patsubst %,$(BUILD)/unity/%.cpp,$(subst /,-,$(sort $(patsubst %/,%,$(dir $(1))))))
 units = $(call obj,$(call unit_src,$(1)))
 
-LIB_OBJ     := $(call units,$(LIB_SRC)) $(call obj,$(EMBED_SRC))
+LIB_OBJ     := $(call units,$(LIB_SRC)) $(call obj,$(EMBED_SRC) $(ID_SRC))
 CLI_OBJ     := $(call units,$(CLI_SRC))
 HARNESS_OBJ := $(call units,$(HARNESS_SRC))
 STUDY_OBJ   := $(call units,$(STUDY_SRC))

@@ -9,11 +9,12 @@
 // Run: build/verification/verify_cli_errors [--data DIR]   (about a second; finds the CLI next
 // to its own directory, build/granseg)
 #include "harness/check_table.hpp"
+#include "harness/cli_process.hpp"
 #include "harness/program.hpp"
+#include "harness/same_outputs.hpp"
 #include "riemann/riemann_sample.hpp"
 #include "table1/table1_states.hpp"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -28,60 +29,19 @@
 
 namespace fs = std::filesystem;
 using granseg::verify::CheckTable;
+using granseg::verify::Cli;
+using granseg::verify::Outcome;
+using granseg::verify::files_below;
+using granseg::verify::line_count;
 using namespace granseg;
 
 namespace {
 
-struct Outcome {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-long lines(const std::string& s) {
-    long n = 0;
-    for (char c : s) n += c == '\n';
-    return n;
-}
-
-long files_below(const fs::path& dir) {
-    if (!fs::exists(dir)) return 0;
-    long n = 0;
-    for (const auto& e : fs::recursive_directory_iterator(dir)) n += e.is_regular_file();
-    return n;
-}
-
-class Cli {
-public:
-    Cli(fs::path binary, fs::path work) : binary_(std::move(binary)), work_(std::move(work)) {}
-
-    Outcome run(const std::string& arguments) const {
-        const fs::path out = work_ / "stdout.txt", err = work_ / "stderr.txt";
-        const std::string command = "'" + binary_.string() + "' " + arguments + " > '" + out.string() +
-                                    "' 2> '" + err.string() + "' < /dev/null";
-        const int raw = std::system(command.c_str());
-        Outcome o;
-        o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-        o.out = read(out);
-        o.err = read(err);
-        return o;
-    }
-
-private:
-    fs::path binary_, work_;
-};
-
 /// A bad input must give exit status 2, one stderr line, empty stdout, and write no file.
 void expect_rejected(CheckTable& t, const std::string& label, const Outcome& o, const fs::path& output_dir) {
     t.count(label + ": exit status", o.status, 2);
-    t.count(label + ": stderr lines + stdout lines", lines(o.err) + lines(o.out), 1);
-    t.count(label + ": files written", files_below(output_dir), 0);
+    t.count(label + ": stderr lines + stdout lines", line_count(o.err) + line_count(o.out), 1);
+    t.count(label + ": files written", files_below(output_dir.string()), 0);
     t.note("  stderr: " + o.err.substr(0, o.err.find('\n')));
 }
 
@@ -344,7 +304,7 @@ void check_riemann_agreement(CheckTable& t, const Cli& cli) {
 int main(int argc, char** argv) {
     const auto options = granseg::verify::parse_program_options(argc, argv);
     (void)options;
-    const fs::path cli_path = fs::absolute(fs::path(argv[0])).parent_path().parent_path() / "granseg";
+    const fs::path cli_path = Cli::beside(argv[0]);
     const fs::path work = fs::temp_directory_path() / ("granseg_verify_cli_" + std::to_string(::getpid()));
     fs::create_directories(work);
     const fs::path out = work / "out", scene = work / "scene.toml";

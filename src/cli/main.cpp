@@ -53,6 +53,9 @@ int main(int argc, char** argv) {
     } catch (const InvariantError& e) {
         std::cerr << "granseg: stopped, invariant broken: " << e.what() << '\n';
         return kExitInvariant;
+    } catch (const Interrupted& e) {
+        std::cerr << e.what() << '\n';
+        return 128 + e.signal();
     } catch (const std::exception& e) {
         std::cerr << "granseg: error: " << e.what() << '\n';
         return kExitFailure;

@@ -83,6 +83,13 @@ void OutputSet::add(const std::string& path, std::string content) {
     files_.emplace_back(path, std::move(content));
 }
 
+void OutputSet::checkpoint(StateIO& io) {
+    std::uint64_t n = files_.size();
+    io("files", n);
+    files_.resize(static_cast<std::size_t>(n));
+    for (auto& [path, content] : files_) io("file.path", path).blob("file.content", content);
+}
+
 void OutputSet::commit() const {
     for (const auto& [path, content] : files_) write_file_atomically(path, content);
 }

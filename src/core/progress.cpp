@@ -1,21 +1,21 @@
 #include "core/progress.hpp"
 
+#include <omp.h>
+
 #include <cstdio>
 #include <ctime>
 
 namespace granseg {
 
-namespace {
-double process_cpu_seconds() {
+double run_cpu_seconds() {
     timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    clock_gettime(omp_get_max_threads() == 1 ? CLOCK_THREAD_CPUTIME_ID : CLOCK_PROCESS_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
-}  // namespace
 
-Progress::Progress(std::string label, double total, double quiet_seconds, double every_seconds)
-    : label_(std::move(label)), total_(total), quiet_(quiet_seconds), every_(every_seconds),
-      start_(clock::now()), last_(start_), cpu_start_(process_cpu_seconds()) {}
+Progress::Progress(std::string label, double total, double start, double quiet_seconds, double every_seconds)
+    : label_(std::move(label)), total_(total), start_value_(start), quiet_(quiet_seconds), every_(every_seconds),
+      start_(clock::now()), last_(start_), cpu_start_(run_cpu_seconds()) {}
 
 void Progress::update(double done) {
     const auto now = clock::now();
@@ -23,7 +23,8 @@ void Progress::update(double done) {
     const double since = std::chrono::duration<double>(now - last_).count();
     if (elapsed < quiet_ || (printed_ && since < every_)) return;
     const double fraction = total_ > 0 ? done / total_ : 1.0;
-    const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    const double run = total_ > start_value_ ? (done - start_value_) / (total_ - start_value_) : 1.0;  // share of this run's part
+    const double eta = run > 0 ? elapsed * (1.0 - run) / run : 0.0;
     std::fprintf(stderr, "%s: %3.0f%% (%.4g of %.4g) %.0f s elapsed, ETA %.0f s\n", label_.c_str(),
                  100.0 * fraction, done, total_, elapsed, eta);
     printed_ = true;
@@ -40,6 +41,6 @@ RunTime Progress::finish(int threads) {
 
 double Progress::wall_seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
 
-double Progress::cpu_seconds() const { return process_cpu_seconds() - cpu_start_; }
+double Progress::cpu_seconds() const { return run_cpu_seconds() - cpu_start_; }
 
 }  // namespace granseg

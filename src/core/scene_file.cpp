@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
@@ -56,6 +57,7 @@ std::string Range::describe(const std::string& name) const {
 struct SceneFile::Impl {
     toml::table root;
     std::map<std::string, std::set<std::string>> asked;  // keys some accessor asked for
+    std::map<std::pair<std::string, std::string>, std::string> used;  // (section, key) -> the value used, as text
 
     /// Marks (section, key) as known and returns its node, or nullptr if absent.
     const toml::node* lookup(const std::string& section, const std::string& key) {
@@ -112,12 +114,12 @@ double SceneFile::number(const std::string& section, const std::string& key,
     if (!node->is_number()) fail(section, key, "expected a number, got " + describe_node(*node), allowed);
     const double v = *node->value<double>();
     if (!range.contains(v)) fail(section, key, format_number(v) + " is out of range", allowed);
-    return v;
+    return note(section, key, v);
 }
 
 double SceneFile::number(const std::string& section, const std::string& key, const Range& range,
                          double fallback) const {
-    return impl_->lookup(section, key) ? number(section, key, range) : fallback;
+    return impl_->lookup(section, key) ? number(section, key, range) : note(section, key, fallback);
 }
 
 long SceneFile::integer(const std::string& section, const std::string& key, long lo,
@@ -128,19 +130,19 @@ long SceneFile::integer(const std::string& section, const std::string& key, long
     if (!node->is_integer()) fail(section, key, "expected an integer, got " + describe_node(*node), allowed);
     const int64_t v = *node->value<int64_t>();
     if (v < lo || v > hi) fail(section, key, std::to_string(v) + " is out of range", allowed);
-    return static_cast<long>(v);
+    return note(section, key, static_cast<long>(v));
 }
 
 long SceneFile::integer(const std::string& section, const std::string& key, long lo, long hi,
                         long fallback) const {
-    return impl_->lookup(section, key) ? integer(section, key, lo, hi) : fallback;
+    return impl_->lookup(section, key) ? integer(section, key, lo, hi) : note(section, key, fallback);
 }
 
 bool SceneFile::flag(const std::string& section, const std::string& key, bool fallback) const {
     const auto* node = impl_->lookup(section, key);
-    if (!node) return fallback;
+    if (!node) return note(section, key, fallback);
     if (!node->is_boolean()) fail(section, key, "expected true or false, got " + describe_node(*node), "true, false");
-    return *node->value<bool>();
+    return note(section, key, *node->value<bool>());
 }
 
 std::string SceneFile::choice(const std::string& section, const std::string& key,
@@ -150,22 +152,22 @@ std::string SceneFile::choice(const std::string& section, const std::string& key
     if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), sorted_list(allowed));
     const std::string v = *node->value<std::string>();
     for (const auto& a : allowed)
-        if (a == v) return v;
+        if (a == v) return note(section, key, v);
     fail(section, key, "unknown value \"" + v + "\"", sorted_list(allowed));
 }
 
 std::string SceneFile::choice(const std::string& section, const std::string& key,
                               const std::vector<std::string>& allowed,
                               const std::string& fallback) const {
-    return impl_->lookup(section, key) ? choice(section, key, allowed) : fallback;
+    return impl_->lookup(section, key) ? choice(section, key, allowed) : note(section, key, fallback);
 }
 
 std::string SceneFile::text(const std::string& section, const std::string& key,
                             const std::string& fallback) const {
     const auto* node = impl_->lookup(section, key);
-    if (!node) return fallback;
+    if (!node) return note(section, key, fallback);
     if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), "a string");
-    return *node->value<std::string>();
+    return note(section, key, *node->value<std::string>());
 }
 
 std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key,
@@ -184,12 +186,12 @@ std::vector<double> SceneFile::numbers(const std::string& section, const std::st
         if (!range.contains(v)) fail(section, key, where + ": " + format_number(v) + " is out of range", allowed);
         out.push_back(v);
     }
-    return out;
+    return note(section, key, out);
 }
 
 std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key,
                                        const Range& range, const std::vector<double>& fallback) const {
-    return impl_->lookup(section, key) ? numbers(section, key, range) : fallback;
+    return impl_->lookup(section, key) ? numbers(section, key, range) : note(section, key, fallback);
 }
 
 Expression SceneFile::expression(const std::string& section, const std::string& key,
@@ -205,7 +207,9 @@ Expression SceneFile::expression(const std::string& section, const std::string& 
     else
         fail(section, key, "expected an expression string, got " + describe_node(*node), allowed);
     try {
-        return Expression(text, variables);
+        Expression e(text, variables);
+        note(section, key, text);
+        return e;
     } catch (const InputError& e) {
         fail(section, key, e.what(), allowed);
     }
@@ -214,7 +218,54 @@ Expression SceneFile::expression(const std::string& section, const std::string& 
 Expression SceneFile::expression(const std::string& section, const std::string& key,
                                  const std::vector<std::string>& variables,
                                  const std::string& fallback) const {
-    return impl_->lookup(section, key) ? expression(section, key, variables) : Expression(fallback, variables);
+    if (impl_->lookup(section, key)) return expression(section, key, variables);
+    note(section, key, fallback);
+    return Expression(fallback, variables);
+}
+
+double SceneFile::note(const std::string& section, const std::string& key, double v) const {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    impl_->used[{section, key}] = text;
+    return v;
+}
+
+long SceneFile::note(const std::string& section, const std::string& key, long v) const {
+    impl_->used[{section, key}] = std::to_string(v);
+    return v;
+}
+
+bool SceneFile::note(const std::string& section, const std::string& key, bool v) const {
+    impl_->used[{section, key}] = v ? "true" : "false";
+    return v;
+}
+
+std::string SceneFile::note(const std::string& section, const std::string& key, const std::string& v) const {
+    impl_->used[{section, key}] = "\"" + v + "\"";
+    return v;
+}
+
+std::vector<double> SceneFile::note(const std::string& section, const std::string& key, const std::vector<double>& v) const {
+    std::string text = "[";
+    for (double x : v) text += (text.size() > 1 ? ", " : "") + format_number(x, 17);
+    impl_->used[{section, key}] = text + "]";
+    return v;
+}
+
+std::string SceneFile::settings(const std::vector<std::string>& ignored) const {
+    std::string out;
+    for (const auto& [where, value] : impl_->used) {
+        const std::string name = "[" + where.first + "] " + where.second;
+        if (std::find(ignored.begin(), ignored.end(), name) == ignored.end()) out += name + " = " + value + "\n";
+    }
+    return out;
+}
+
+std::string first_setting_missing(const std::string& a, const std::string& b) {
+    std::istringstream in(a);
+    for (std::string line; std::getline(in, line);)
+        if (("\n" + b).find("\n" + line + "\n") == std::string::npos) return line;
+    return "";
 }
 
 void SceneFile::finish() const {

@@ -91,16 +91,33 @@ public:
     /// Rejects the first (in file order) section or key that no accessor asked for.
     void finish() const;
 
+    /// Every key asked for so far with the value it resolved to (its default where the file has
+    /// none), one line "[section] key = value" each, sorted; the keys in `ignored` (written
+    /// "[section] key") left out. Two scene files with the same settings describe the same run
+    /// (checkpoints compare them, core/checkpoint_file.hpp).
+    std::string settings(const std::vector<std::string>& ignored = {}) const;
+
     /// Throws the one-line InputError "NAME: [section] key: what (allowed: allowed)".
     [[noreturn]] void fail(const std::string& section, const std::string& key,
                            const std::string& what, const std::string& allowed) const;
 
 private:
     struct Impl;
+    /// Records the value `key` resolved to (settings()) and returns it.
+    double note(const std::string& section, const std::string& key, double v) const;
+    long note(const std::string& section, const std::string& key, long v) const;
+    bool note(const std::string& section, const std::string& key, bool v) const;
+    std::string note(const std::string& section, const std::string& key, const std::string& v) const;
+    std::vector<double> note(const std::string& section, const std::string& key, const std::vector<double>& v) const;
+
     SceneFile(std::unique_ptr<Impl> impl, std::string name);
 
     std::unique_ptr<Impl> impl_;  // the parsed TOML and the keys asked for so far
     std::string name_;
 };
+
+/// The first line of settings `a` (SceneFile::settings) that `b` lacks, "" if none: how two runs'
+/// settings differ, for messages.
+std::string first_setting_missing(const std::string& a, const std::string& b);
 
 }  // namespace granseg

@@ -93,6 +93,7 @@
 
 #include "closures/material.hpp"
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 #include "flow/time_step.hpp"
 #include "flow_diffusion/coupled_viscosity.hpp"
 #include "flow_diffusion/diffusion_lines.hpp"
@@ -136,6 +137,7 @@ const char* flow_stage_name(FlowStage stage);
 struct FlowTimers {
     std::array<double, kFlowStages> seconds{};
     double total() const;
+    void checkpoint(StateIO& io) { io("seconds", seconds); }
 };
 
 /// The work of the steps (for benchmarks and run summaries): pressure solves, their Newton steps
@@ -145,6 +147,10 @@ struct FlowTimers {
 struct FlowCounters {
     long pressure_solves = 0, newton = 0, krylov = 0, repeated = 0, temperature_iterations = 0;
     std::array<long, kStepBounds> set_by{};
+    void checkpoint(StateIO& io) {
+        io("pressure_solves", pressure_solves)("newton", newton)("krylov", krylov)("repeated", repeated);
+        io("temperature_iterations", temperature_iterations)("set_by", set_by);
+    }
 };
 
 class FlowSolver {
@@ -305,6 +311,20 @@ private:
     std::optional<MusclHancock> reconstruction_;  // transport = muscl: the face values of Phi
     FlowTimers timers_;
     FlowCounters counters_;
+
+public:
+    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: time, steps,
+    /// the last dt and its bound, the state, phi_hat, the hand-over (Phi_before_, the last step's
+    /// faces, which also bound the next dt), the pressure's and the temperature's warm starts,
+    /// counters and timers. The rest is scratch that a step writes before it reads it, or set-up
+    /// (grid, settings, walls, sources: the caller builds the solver as before). A member added
+    /// above that outlives a step belongs here too (the kill-and-resume checks catch one forgotten).
+    void checkpoint(StateIO& io) {
+        io("flow.t", t_)("flow.dt", dt_)("flow.bound", bound_)("flow.steps", steps_)("flow.phi_hat", phi_hat_);
+        io("flow.state", state_)("flow.Phi_before", Phi_before_)("flow.faces", faces_)("flow.dp", dp_);
+        io("flow.temperature", temperature_)("flow.counters", counters_)("flow.timers", timers_);
+        gradient_valid_ = gradient_valid_ && !io.restoring();  // the closures follow at the next step's start
+    }
 };
 
 }  // namespace granseg

@@ -25,6 +25,7 @@
 // iterations at any dt.
 #pragma once
 
+#include "core/state_io.hpp"
 #include "flow_fields/cell_pattern.hpp"
 #include "flow_fields/flow_mesh.hpp"
 #include "flow_fields/flow_settings.hpp"
@@ -54,6 +55,10 @@ private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
     CellPattern<Matrix> pattern_;  // inside cells and interior faces; values rewritten each step
     Eigen::VectorXd rhs_, T_, change_;  // per row: right-hand side, T, the change of T (the next guess)
+
+public:
+    /// Saves or restores (core/state_io.hpp) the warm start of the next solve.
+    void checkpoint(StateIO& io) { io("change", change_); }
 };
 
 }  // namespace granseg

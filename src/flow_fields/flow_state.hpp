@@ -17,6 +17,8 @@
 // these as const inputs and write others; the table in flow/flow_solver.hpp lists which.
 #pragma once
 
+#include "core/state_io.hpp"
+
 #include <array>
 #include <vector>
 
@@ -28,6 +30,7 @@ struct FlowState {
     std::vector<double> E;                 // Phi T
     std::array<std::vector<double>, 3> u;  // velocity m/Phi (0 in empty cells)
     std::vector<double> T;                 // granular temperature E/Phi (T_floor in empty cells)
+    void checkpoint(StateIO& io) { io("Phi", Phi)("m", m)("E", E)("u", u)("T", T); }
 };
 
 struct CellClosures {
@@ -52,6 +55,7 @@ struct AxisFaces {
     std::array<std::vector<double>, 3> mom;  // momentum flux per component; mom[axis] as seen by the cell above
     std::vector<double> mom_below;         // normal momentum flux as seen by the cell below
     std::vector<double> p, speed;          // face pressure p* and fastest wave speed |u_n| + c
+    void checkpoint(StateIO& io) { io("mass", mass)("energy", energy)("mom", mom)("mom_below", mom_below)("p", p)("speed", speed); }
 };
 
 using FlowFaces = std::array<AxisFaces, 3>;

@@ -14,10 +14,13 @@
 
 namespace granseg {
 
-RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label, const std::function<void()>& after_step) {
+RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label, const std::function<void()>& after_step,
+                     RunCheckpoints* checkpoints, const RunState& state) {
+    RunCheckpoints& saves = checkpoints_or_none(checkpoints);
     const double mass0 = solver.mass(), t0 = solver.time();
-    Progress progress(label, t_end);
+    Progress progress(label, t_end, t0);
     while (solver.time() < t_end) {
+        saves.before_step(solver.time(), t_end, solver.settings().dt_max, state);
         solver.step(t_end);
         if (after_step) after_step();
         progress.update(solver.time());
@@ -25,8 +28,10 @@ RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label,
         if (!(drift <= kMassDriftLimit))
             throw InvariantError(label + ": mass changed by " + format_number(drift) + " (relative) between t = " +
                                  format_number(t0) + " and " + format_number(solver.time()) + " s");
+        saves.after_step(solver.time(), solver.steps(), state);
     }
-    return progress.finish(run_threads(solver.grid().cells()));
+    saves.finish(solver.time(), solver.steps(), state);
+    return progress.finish(run_threads(solver.grid().cells())) + saves.earlier();
 }
 
 namespace {

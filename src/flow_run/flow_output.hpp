@@ -11,6 +11,7 @@
 #include "core/drum_shape.hpp"
 #include "core/output.hpp"
 #include "core/progress.hpp"
+#include "core/run_checkpoints.hpp"
 #include "flow/flow_solver.hpp"
 
 #include <cmath>
@@ -26,9 +27,12 @@ constexpr double kMassDriftLimit = 1e-8;
 
 /// Steps `solver` to t_end, printing progress with an ETA on stderr for long runs, calling
 /// `after_step` (if given) after every step, and throwing InvariantError if the mass drifts by
-/// more than kMassDriftLimit. Returns the run's wall and CPU seconds and its threads.
+/// more than kMassDriftLimit. With `checkpoints`, writes checkpoints of `state` (the solver and
+/// what the caller records, core/run_checkpoints.hpp; the caller has resumed it first, if at
+/// all). Returns the run's wall and CPU seconds (with those before a resume) and its threads.
 RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label,
-                  const std::function<void()>& after_step = {});
+                     const std::function<void()>& after_step = {}, RunCheckpoints* checkpoints = nullptr,
+                     const RunState& state = {});
 
 /// Cell fields of the slice j = 0, one gnuplot block per row of x (blank lines between rows):
 /// x z Phi u_x u_y u_z T p inside, in the frame of the solver (lab = false) or with positions

@@ -66,8 +66,7 @@ struct FlowJob : SceneJob {
         solver.set_state(Phi, u, T);
         DataTable history;
         history.comment(label + ": mass = sum Phi dV (m^3 per m^(3-d)), mass_change relative to t = 0, kinetic energy sum Phi |u|^2/2 dV (rho* = 1)");
-        const double mass0 = solver.mass();
-        double next = 0.0;
+        double mass0 = solver.mass(), next = 0.0;  // rows every t_end/history_samples (from the checkpoint's next on, after a resume)
         auto sample = [&] {
             if (solver.time() < next && solver.time() < t_end) return;
             next += t_end / history_samples;
@@ -80,8 +79,9 @@ struct FlowJob : SceneJob {
                           {"kinetic_energy", d.kinetic_energy}, {"max_speed", d.max_speed},
                           {"T_mean", sum > 0 ? PhiT / sum : 0.0}, {"dt", solver.last_dt()}});
         };
-        sample();
-        advance_flow(solver, t_end, label, sample);
+        const RunState state = [&](StateIO& io) { io("flow", solver)("history", history)("mass0", mass0)("next", next); };
+        if (!checkpoints_or_none(checkpoints).resume(t_end, state)) sample();
+        advance_flow(solver, t_end, label, sample, checkpoints, state);
         OutputSet out;
         out.add("history.dat", history);
         if (grid.n[0] == 1 && grid.n[1] == 1) out.add("profile.dat", flow_column_table(solver));

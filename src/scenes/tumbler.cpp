@@ -4,6 +4,7 @@
 #include "core/format.hpp"
 #include "scenes/flow_scenes.hpp"
 #include "scenes/material_section.hpp"
+#include "scenes/start_from.hpp"
 
 #include <cmath>
 
@@ -16,11 +17,18 @@ struct Tumbler : SceneJob {
 
     OutputSet run() override {
         CoupledTumbler tumbler(scene.setup);
-        return run_coupled_tumbler(tumbler, scene.run);
+        start(tumbler, scene);
+        return run_coupled_tumbler(tumbler, scene.run, {}, checkpoints);
     }
 };
 
 }  // namespace
+
+void start(CoupledTumbler& tumbler, const TumblerScene& scene) {
+    if (scene.flow_from.empty()) return;
+    StateIO flow = flow_state_of(scene.flow_from);
+    tumbler.start_from(flow);
+}
 
 int min_tumbler_cells() { return static_cast<int>(std::ceil(2.0 / kLayerShare)); }
 
@@ -38,6 +46,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
                    "cells_per_diameter >= " + std::to_string(min_tumbler_cells()));
     t.run.run = read_drum_run(scene);
     t.run.frames = static_cast<int>(scene.integer("run", "frames", 0, 1000, t.run.frames));
+    t.flow_from = read_flow_source(scene, t.run.run.t_end);
 
     const std::string seg = "segregation";
     s.S = scene.number(seg, "S", Range::at_least(0), s.S);
@@ -78,10 +87,13 @@ TumblerScene read_tumbler(const SceneFile& scene) {
                        "0 <= tracer <= 1 in the drum");
     });
     try {
-        const CoupledTumbler probe(s);
+        CoupledTumbler probe(s);
         t.run.regions = coupled_regions(s.drum, surface_level(s.material, probe.initial_mixture()));
+        start(probe, t);
     } catch (const InvariantError& e) {
         scene.fail("initial", "phi_hat", e.what(), "a mixture whose Phi_rcp(phi_hat) lies above the initial bed's Phi");
+    } catch (const InputError& e) {
+        scene.fail("initial", "phi_hat", e.what(), "0 <= phi_hat <= 1 in every cell of the flow of [initial] flow");
     }
     return t;
 }

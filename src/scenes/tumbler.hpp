@@ -15,12 +15,17 @@ namespace granseg {
 struct TumblerScene {
     CoupledTumblerSetup setup;
     CoupledRunOptions run;
+    std::string flow_from;  // [initial] flow: a checkpoint whose flow the run starts from ("": the bed at rest)
 };
 
 /// Reads and validates every key of a tumbler scene (scene.fail on a bad value), including the
 /// initial bed: phi_hat in [0, 1] wherever there is material and, with packing feedback, the bed
 /// below Phi_rcp(phi_hat) in every cell.
 TumblerScene read_tumbler(const SceneFile& scene);
+
+/// Starts `tumbler` (built from scene.setup) from the flow of [initial] flow, if the scene has one
+/// (CoupledTumbler::start_from).
+void start(CoupledTumbler& tumbler, const TumblerScene& scene);
 
 /// Smallest cells_per_diameter of a tumbler scene: the flowing layer, kLayerShare D thick at the
 /// middle of the surface, must span two cells (assumption C4).

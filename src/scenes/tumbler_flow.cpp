@@ -45,6 +45,12 @@ public:
         }
     }
 
+    /// Saves or restores (core/state_io.hpp) what the record has taken so far; the rest is set-up.
+    void checkpoint(StateIO& io) {
+        io("record.mass0", mass0_)("record.angle", angle_)("record.layer", layer_)("record.history", history_)("record.out", out_);
+        io("record.snapshot", snapshot_)("record.next_history", next_history_)("record.next_snapshot", next_snapshot_);
+    }
+
     /// The files: snapshots, history.dat, summary.dat, fields_lab.dat, fields_drum.dat.
     OutputSet finish(const RunTime& cost) {
         out_.add("history.dat", history_);
@@ -91,7 +97,8 @@ private:
     const DrumSpec& drum_;
     const DrumRun& run_;
     const DrumShape shape_;
-    const double Phi_level_, v_flow_, mass0_;  // mass0_: before the first sample
+    const double Phi_level_, v_flow_;
+    double mass0_;                  // before the first sample
     TimeAverage angle_, layer_;                 // time averages from angle_from
     DataTable history_;
     OutputSet out_;
@@ -111,8 +118,9 @@ struct TumblerFlow : SceneJob {
         FlowSolver solver(drum.grid(), material, settings, drum.frame());
         start_at_rest(solver);
         FlowDrumRecord record(solver, drum, run_options, surface_level(material, settings.phi_hat));
-        record.sample();
-        const RunTime cost = advance_flow(solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); });
+        const RunState state = [&](StateIO& io) { io("flow", solver)("record", record); };
+        if (!checkpoints_or_none(checkpoints).resume(run_options.t_end, state)) record.sample();
+        const RunTime cost = advance_flow(solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); }, checkpoints, state);
         return record.finish(cost);
     }
 

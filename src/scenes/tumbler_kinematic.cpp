@@ -16,7 +16,7 @@ struct TumblerKinematic : SceneJob {
 
     OutputSet run() override {
         KinematicTumbler tumbler(scene.setup);
-        const TumblerRunResult result = run_kinematic_tumbler(tumbler, scene.run);
+        const TumblerRunResult result = run_kinematic_tumbler(tumbler, scene.run, {}, checkpoints);
         return tumbler_kinematic_outputs(tumbler, result, scene.run);
     }
 };

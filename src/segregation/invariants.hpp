@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -30,6 +31,9 @@ struct BoundsMonitor {
 
     /// Updates the extremes with the inside cells of phi.
     void observe(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi);
+    void checkpoint(StateIO& io) {
+        io("max_excess", max_excess)("min_phi", min_phi)("where_excess", where_excess)("where_min", where_min)("nonfinite", nonfinite);
+    }
 };
 
 /// Round-off allowance of the bounds: a scheme that keeps 0 <= phi <= Phi in real arithmetic

@@ -34,6 +34,7 @@
 //    (largest_correction) so a run can prove it was round-off and not a broken scheme.
 #pragma once
 
+#include "core/state_io.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/scheme.hpp"
 
@@ -91,6 +92,10 @@ private:
     long long cell_updates_ = 0;
     double largest_correction_ = 0.0;
     std::vector<double> F_, F_sum_, at_lower_, at_upper_, stage_;  // work space
+
+public:
+    /// Saves or restores (core/state_io.hpp) the counts a run reports.
+    void checkpoint(StateIO& io) { io("cell_updates", cell_updates_)("largest_correction", largest_correction_); }
 };
 
 }  // namespace granseg

@@ -42,6 +42,10 @@ struct CoupledMeasures {
     PatternMetrics metrics;
     PackingContrast contrast;
     LayerRegionShares own;
+    void checkpoint(StateIO& io) {
+        io("small_change", small_change)("large_change", large_change)("surface_angle", surface_angle)("axis", axis);
+        io("tracer_core", tracer_core)("points_core", points_core)("metrics", metrics)("contrast", contrast)("own", own);
+    }
 };
 
 /// The files of a coupled run as it goes: the history sampled every kDrumHistoryInterval (with the
@@ -55,6 +59,14 @@ public:
     void carry_points(double dt);
     /// The files: initial_lab.dat, snapshots and frames, history.dat, summary.dat, fields_lab.dat.
     OutputSet finish(const RunTime& cost);
+    /// Saves or restores (core/state_io.hpp) what the record has taken so far; the rest is set-up.
+    void checkpoint(StateIO& io) {
+        io("record.hat0", hat0_)("record.amount0", amount0_)("record.amount_all", amount_all_)("record.out", out_);
+        io("record.history", history_)("record.angle", angle_)("record.layer", layer_)("record.bounds", bounds_);
+        io("record.last", last_)("record.snapshot", snapshot_)("record.frame", frame_)("record.next_history", next_history_);
+        io("record.next_snapshot", next_snapshot_)("record.next_frame", next_frame_);
+        if (points_) io("record.points", *points_);
+    }
 
 private:
     bool due(double next) const;
@@ -74,11 +86,11 @@ private:
     const DrumSpec& drum_;
     const DrumShape shape_;
     const double level_, v_flow_;
-    const std::vector<double> hat0_;
-    const std::array<double, 2> amount0_;
+    std::vector<double> hat0_;  // phi_hat at the start
+    std::array<double, 2> amount0_;
     // Both phases' changes are measured against the whole amount of material: round-off follows
     // the bulk fluxes, and a phase may start empty (phi_hat = 0 or 1 everywhere).
-    const double amount_all_;
+    double amount_all_;
     const LayerRegions own_regions_;
     PackingContrastOptions contrast_options_;
     std::optional<MaterialPoints> points_;
@@ -88,8 +100,8 @@ private:
     BoundsMonitor bounds_;
     CoupledMeasures last_;
     int snapshot_ = 0, frame_ = 0;
-    double next_history_ = 0.0, next_snapshot_ = 0.0, next_frame_ = 0.0;
-    const double frame_every_;
+    double next_history_, next_snapshot_, next_frame_;  // from the start
+    const double frame_every_;  // t_end/frames of a run from t = 0 (or from the time it starts at)
 };
 
 CoupledRecord::CoupledRecord(CoupledTumbler& tumbler, const CoupledRunOptions& options)
@@ -106,10 +118,19 @@ CoupledRecord::CoupledRecord(CoupledTumbler& tumbler, const CoupledRunOptions& o
       own_regions_(tumbler.grid(), closest_surface_distance(drum_), drum_.radius(), kAxisShare * drum_.diameter),
       angle_(options.run.angle_from),
       layer_(options.run.angle_from),
-      frame_every_(options.frames > 0 ? options.run.t_end / options.frames : INFINITY) {
+      next_history_(flow_.time()),
+      next_snapshot_(flow_.time()),
+      next_frame_(flow_.time()),
+      frame_every_(options.frames > 0 ? (options.run.t_end - flow_.time()) / options.frames : INFINITY) {
     out_.add("initial_lab.dat", coupled_field_table(tumbler));
     contrast_options_.bed_level = level_, contrast_options_.v_flow = v_flow_, contrast_options_.bin = drum_.diameter / 20;
-    if (tumbler.setup().tracer0) points_.emplace(tumbler.grid(), flow_.Phi(), level_, tumbler.setup().tracer0);
+    if (tumbler.setup().tracer0) {  // marked by the tracer's share at their lab positions at the start
+        const auto mark = [&, t = flow_.time()](double x, double z) {
+            const auto lab = flow_.frame().to_lab_position(t, x, z);
+            return tumbler.setup().tracer0(lab[0], lab[1]);
+        };
+        points_.emplace(tumbler.grid(), flow_.Phi(), level_, mark);
+    }
     history_.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
                      "relative to the whole amount at t = 0, sum of Phi); "
                      "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
@@ -245,20 +266,26 @@ PatternRegions coupled_regions(const DrumSpec& drum, double bed_level) {
     return r;
 }
 
-OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,
-                              const CoupledStepObserver& observer) {
+OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options, const CoupledStepObserver& observer,
+                              RunCheckpoints* checkpoints) {
     const double t_end = options.run.t_end;
+    const FlowSolver& flow = tumbler.flow();
     CoupledRecord record(tumbler, options);
-    record.sample();
-    Progress progress("tumbler", t_end);
-    while (tumbler.flow().time() < t_end) {
+    RunCheckpoints& saves = checkpoints_or_none(checkpoints);
+    const RunState state = [&](StateIO& io) { io("tumbler", tumbler)("record", record); };
+    if (!saves.resume(t_end, state)) record.sample();
+    Progress progress("tumbler", t_end, flow.time());
+    while (flow.time() < t_end) {
+        saves.before_step(flow.time(), t_end, flow.settings().dt_max, state);
         const double dt = tumbler.step(t_end);
         record.carry_points(dt);
         if (observer) observer(tumbler);
         record.sample();
-        progress.update(tumbler.flow().time());
+        progress.update(flow.time());
+        saves.after_step(flow.time(), flow.steps(), state);
     }
-    return record.finish(progress.finish(run_threads(tumbler.grid().cells())));
+    saves.finish(flow.time(), flow.steps(), state);
+    return record.finish(progress.finish(run_threads(tumbler.grid().cells())) + saves.earlier());
 }
 
 }  // namespace granseg

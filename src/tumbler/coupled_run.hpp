@@ -16,6 +16,7 @@
 #pragma once
 
 #include "core/output.hpp"
+#include "core/run_checkpoints.hpp"
 #include "tumbler/coupled_tumbler.hpp"
 #include "tumbler/pattern_metrics.hpp"
 
@@ -50,7 +51,9 @@ using CoupledStepObserver = std::function<void(const CoupledTumbler& tumbler)>;
 /// axis share, the drum's own regions (layer_regions.hpp) and Fig. 7d contrast at t_end),
 /// initial_lab.dat and fields_lab.dat (coupled_field_table at t = 0 and t_end), frames/frame_NNN.dat,
 /// vtk/tumbler_NNNN.vtk.
+/// With `checkpoints`, the run writes and resumes checkpoints of the tumbler and of what it has
+/// recorded (core/run_checkpoints.hpp).
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,
-                              const CoupledStepObserver& observer = {});
+                              const CoupledStepObserver& observer = {}, RunCheckpoints* checkpoints = nullptr);
 
 }  // namespace granseg

@@ -98,6 +98,28 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
         if (g.n[axis] > 1) frozen_.a[axis].assign(g.cells(), 0.0), d_s_[axis].assign(g.cells(), 0.0);
 }
 
+void CoupledTumbler::start_from(StateIO& flow_state) {
+    flow_.checkpoint(flow_state);
+    const Grid& g = grid();
+    const double t = flow_.time();
+    const auto share = [&](const std::function<double(double, double)>& f, const char* name, std::size_t c) {
+        if (!(flow_.Phi()[c] > 0.0)) return 0.0;
+        const auto lab = flow_.frame().to_lab_position(t, g.center(0, c % g.n[0]), g.center(2, c / (g.n[0] * g.n[1])));
+        const double v = f(lab[0], lab[1]);
+        if (!(v >= 0.0 && v <= 1.0))
+            throw InputError(std::string("tumbler: initial ") + name + " = " + format_number(v) + " at x = " + format_number(lab[0]) +
+                             ", z = " + format_number(lab[1]) + " (lab frame, t = " + format_number(t) + " s) outside [0, 1]");
+        return v * flow_.Phi()[c];
+    };
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        if (!g.is_inside(c)) continue;
+        phi_[c] = share(setup_.phi_hat0, "phi_hat", c);
+        if (!tracer_.empty()) tracer_[c] = share(setup_.tracer0, "tracer", c);
+    }
+    flow_.set_phi_hat(setup_.packing_feedback ? phi_hat() : std::vector<double>{});  // (assumption C3)
+    frozen_.Phi = flow_.Phi();
+}
+
 std::vector<double> CoupledTumbler::phi_hat() const {
     const std::size_t cells = grid().cells();
     const unsigned char* in = inside_.data();

@@ -40,6 +40,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "core/state_io.hpp"
 #include "flow/flow_solver.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/bulk_transport_fct.hpp"
@@ -74,6 +75,7 @@ struct CoupledTumblerSetup {
 /// Wall-clock seconds spent in the parts of the coupled step (for benchmarks).
 struct CoupledTimers {
     double flow = 0, bulk = 0, segregation = 0, feedback = 0;  // steps 1, 2, 3, 4
+    void checkpoint(StateIO& io) { io("flow", flow)("bulk", bulk)("segregation", segregation)("feedback", feedback); }
 };
 
 class CoupledTumbler {
@@ -87,6 +89,13 @@ public:
     /// One coupled step (see above), not beyond t_end. Returns the flow's dt. InvariantError on a
     /// broken invariant of the flow, or if the bulk step leaves 0 <= phi <= Phi beyond round-off.
     double step(double t_end = std::numeric_limits<double>::infinity());
+    /// Starts from another run's flow instead of the bed at rest: the flow solver's state from
+    /// `flow_state` (a tumbler-flow's or a tumbler's checkpoint, core/state_io.hpp), its time and
+    /// steps included; phi = phi_hat0 Phi and the tracer from tracer0 at the cells' lab positions
+    /// at that time; the segregation starts there as at t = 0. InputError for phi_hat0 or tracer0
+    /// outside [0, 1] in a cell holding material, InvariantError (packing feedback) for a cell packed
+    /// beyond Phi_rcp(phi_hat0).
+    void start_from(StateIO& flow_state);
 
     const CoupledTumblerSetup& setup() const { return setup_; }
     const FlowSolver& flow() const { return flow_; }
@@ -151,6 +160,18 @@ private:
     double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
     double largest_bulk_clip_ = 0.0;
     CoupledTimers timers_;
+
+public:
+    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: the flow, phi
+    /// and the tracer, the fields of the last segregation sub-step, the counts and extremes, the
+    /// timers. The rest is set-up (built from the setup as before) or
+    /// scratch of a step. A member added above that outlives a step belongs here too.
+    void checkpoint(StateIO& io) {
+        io("tumbler.flow", flow_)("tumbler.segregation", segregation_)("tumbler.frozen", frozen_)("tumbler.d_s", d_s_);
+        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.substeps", substeps_);
+        io("tumbler.segregation_steps", segregation_steps_)("tumbler.max_excess", max_excess_)("tumbler.min_phi", min_phi_);
+        io("tumbler.largest_bulk_clip", largest_bulk_clip_)("tumbler.timers", timers_);
+    }
 };
 
 }  // namespace granseg

@@ -64,17 +64,30 @@ std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid) {
 }
 
 void TimeAverage::add(double t, double value) {
-    if (t < from_ || !std::isfinite(value)) return;  // NaN: no surface crossing within 0.8 R
-    sum_ += value, sum2_ += value * value, ++n_;
+    if (!std::isfinite(value)) return;  // NaN: no surface crossing within 0.8 R
+    t_.push_back(t), value_.push_back(value);
 }
 
-double TimeAverage::mean() const { return n_ > 0 ? sum_ / n_ : std::numeric_limits<double>::quiet_NaN(); }
+std::array<double, 3> TimeAverage::sums() const {
+    std::array<double, 3> s{};
+    for (std::size_t i = 0; i < t_.size(); ++i)
+        if (t_[i] >= from_) s[0] += value_[i], s[1] += value_[i] * value_[i], s[2] += 1.0;
+    return s;
+}
+
+long TimeAverage::samples() const { return static_cast<long>(sums()[2]); }
+
+double TimeAverage::mean() const {
+    const auto [sum, sum2, n] = sums();
+    return n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
+}
 
 double TimeAverage::std_dev() const {
-    if (n_ == 0) return std::numeric_limits<double>::quiet_NaN();
-    if (n_ == 1) return 0.0;
-    const double m = mean();
-    return std::sqrt(std::max(0.0, sum2_ / n_ - m * m));
+    const auto [sum, sum2, n] = sums();
+    if (n == 0) return std::numeric_limits<double>::quiet_NaN();
+    if (n == 1) return 0.0;
+    const double m = sum / n;
+    return std::sqrt(std::max(0.0, sum2 / n - m * m));
 }
 
 }  // namespace granseg

@@ -12,8 +12,10 @@
 #include "closures/material.hpp"
 #include "core/drum_shape.hpp"
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 #include "flow/flow_solver.hpp"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -86,17 +88,23 @@ std::vector<double> drum_fill_fraction(const DrumSpec& drum, const Grid& grid);
 
 /// Mean and standard deviation of a drum diagnostic (the free-surface angle, the flowing layer's
 /// thickness) over the samples taken at t >= from (NaN samples, without a surface fit, left out).
+/// It keeps every sample, so that a run extended to a later t_end with another `from` (the
+/// default angle_from depends on t_end) reports the average a run made with that t_end reports.
 class TimeAverage {
 public:
     explicit TimeAverage(double from) : from_(from) {}
     void add(double t, double value);
     double mean() const;
     double std_dev() const;  // 0 for one sample, NaN for none (as mean())
-    long samples() const { return n_; }
+    long samples() const;
+    /// Saves or restores (core/state_io.hpp) the samples; `from` stays the constructor's.
+    void checkpoint(StateIO& io) { io("average.t", t_)("average.value", value_); }
 
 private:
-    double from_, sum_ = 0, sum2_ = 0;
-    long n_ = 0;
+    /// Sum of the samples at t >= from_ and of their squares (in the order taken), and their count.
+    std::array<double, 3> sums() const;
+    double from_;
+    std::vector<double> t_, value_;  // every finite sample
 };
 
 }  // namespace granseg

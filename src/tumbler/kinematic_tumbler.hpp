@@ -25,6 +25,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "core/state_io.hpp"
 #include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/segregation_solver.hpp"
@@ -96,6 +97,14 @@ private:
     long steps_ = 0;
     long long bulk_updates_ = 0;
     std::size_t bed_cells_ = 0;
+
+public:
+    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads (the rest is
+    /// built from the setup, as before).
+    void checkpoint(StateIO& io) {
+        io("kinematic.phi", phi_)("kinematic.t", t_)("kinematic.steps", steps_)("kinematic.bulk_updates", bulk_updates_);
+        io("kinematic.solver", solver_);
+    }
 };
 
 /// phi_hat = phi/Phi per cell (0 outside the bed).

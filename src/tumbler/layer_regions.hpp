@@ -18,6 +18,7 @@
 #pragma once
 
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 
 #include <vector>
 
@@ -26,6 +27,7 @@ namespace granseg {
 struct LayerRegionShares {
     double r_core = 0;                                  // m, d - delta
     double core = 0, ring = 0, periphery = 0, axis = 0;  // small-particle share of each region
+    void checkpoint(StateIO& io) { io("r_core", r_core)("core", core)("ring", ring)("periphery", periphery)("axis", axis); }
 };
 
 /// The regions of a drum of radius R whose free surface passes at distance d from the axis; the

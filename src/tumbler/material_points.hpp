@@ -15,6 +15,7 @@
 #pragma once
 
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 
 #include <functional>
 #include <vector>
@@ -44,6 +45,10 @@ private:
     Grid grid_;
     std::vector<double> x_, z_;
     std::vector<unsigned char> marked_;
+
+public:
+    /// Saves or restores (core/state_io.hpp) the points.
+    void checkpoint(StateIO& io) { io("points.x", x_)("points.z", z_)("points.marked", marked_); }
 };
 
 }  // namespace granseg

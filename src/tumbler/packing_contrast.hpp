@@ -16,6 +16,7 @@
 // bins (the "noise" the contrast is compared with).
 #pragma once
 
+#include "core/state_io.hpp"
 #include "tumbler/coupled_tumbler.hpp"
 
 namespace granseg {
@@ -32,6 +33,7 @@ struct PackingContrast {
     double spread = 0;    // pooled standard deviation of Phi within a kind and a bin
     int bins = 0;         // bins with both kinds
     long mixed = 0, pure = 0;  // cells of each kind in those bins
+    void checkpoint(StateIO& io) { io("contrast", contrast)("spread", spread)("bins", bins)("mixed", mixed)("pure", pure); }
 };
 
 /// The contrast of the tumbler's current state; surface_angle_deg: the fitted free-surface angle

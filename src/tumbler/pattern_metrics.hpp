@@ -15,6 +15,7 @@
 
 #include "core/drum_shape.hpp"
 #include "core/grid.hpp"
+#include "core/state_io.hpp"
 
 #include <vector>
 
@@ -37,6 +38,9 @@ struct PatternMetrics {
     double mean = 0;                           // mass-weighted phi_hat of the whole bed
     double index = 0;                          // segregation index (see above)
     double core_deviation = 0;                 // max |phi_hat - phi_hat_initial| over the core cells
+    void checkpoint(StateIO& io) {
+        io("core", core)("ring", ring)("periphery", periphery)("mean", mean)("index", index)("core_deviation", core_deviation);
+    }
 };
 
 /// The metrics of phi on the bed cells of `grid` (drum centre at the origin; a slab: its slice

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <string>
 
 namespace granseg {
 
@@ -28,10 +30,27 @@ void merge(BoundsMonitor& run, const BoundsMonitor& step) {
     run.nonfinite += step.nonfinite;
 }
 
+/// A resumed run continues on the sample and frame times of this run: the last ones the checkpoint
+/// recorded must be this run's (an extension to a later t_end keeps their spacing: t_end/samples
+/// and t_end/frames as in the run that wrote it). InputError otherwise.
+void check_continuation(const std::string& file, const TumblerRunResult& result, int next_sample,
+                        const std::function<double(int)>& sample_time, int next_frame, const std::function<double(int)>& frame_time) {
+    const auto check = [&](const char* key, double recorded, double here, double spacing) {
+        if (recorded != here)
+            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " +
+                             format_number(recorded, 17) + " s, this scene's at t = " + format_number(here, 17) +
+                             " s (allowed: the checkpoint's spacing, " + format_number(spacing, 17) + " s, up to the new t_end)");
+    };
+    const auto& h = result.history;
+    if (h.size() >= 2) check("samples", h.back().t, sample_time(next_sample - 1), h[1].t - h[0].t);
+    const auto& f = result.frames;
+    if (!f.empty()) check("frames", f.back().t, frame_time(next_frame - 1), f.size() >= 2 ? f[1].t - f[0].t : f[0].t - h[0].t);
+}
+
 }  // namespace
 
 TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
-                                       const TumblerStepObserver& observer) {
+                                       const TumblerStepObserver& observer, RunCheckpoints* checkpoints) {
     if (!(options.t_end > tumbler.time()) || options.samples < 1 || options.frames < 0)
         throw InputError("tumbler run: needs t_end > t, samples >= 1, frames >= 0");
     const Grid& grid = tumbler.grid();
@@ -43,13 +62,19 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
     const auto record = [&](double t) {
         result.history.push_back({t, pattern_metrics(grid, tumbler.phi(), Phi, options.regions, result.phi_hat_initial)});
     };
-    record(tumbler.time());
-
     const double t0 = tumbler.time(), span = options.t_end - t0;
     int next_sample = 1, next_frame = 1;
+    // Steps land on the sample and frame times, so the state at t_end is on the path of a longer
+    // run with the same spacing: no state is kept before the last step (longest step 0).
+    RunCheckpoints& saves = checkpoints_or_none(checkpoints);
+    const RunState state = [&](StateIO& io) {
+        io("kinematic", tumbler)("result", result)("next_sample", next_sample)("next_frame", next_frame);
+    };
     const auto sample_time = [&](int n) { return n == options.samples ? options.t_end : t0 + span * n / options.samples; };
     const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
-    Progress progress("tumbler-kinematic", options.t_end);
+    if (!saves.resume(options.t_end, state)) record(t0);
+    else check_continuation(saves.path(), result, next_sample, sample_time, next_frame, frame_time);
+    Progress progress("tumbler-kinematic", options.t_end, tumbler.time());
     BoundsMonitor step_bulk;
     std::vector<double> phi_after_bulk;  // kept only for an observer
     const auto after_bulk = [&](const std::vector<double>& phi) {
@@ -80,7 +105,9 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
             ++next_sample;
         }
         progress.update(tumbler.time());
+        saves.after_step(tumbler.time(), tumbler.steps(), state);
     }
+    saves.finish(tumbler.time(), tumbler.steps(), state);
     progress.finish();
     result.mass_end = total_amount(grid, tumbler.phi());
     return result;

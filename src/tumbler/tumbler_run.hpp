@@ -14,6 +14,7 @@
 //   invariants  the list above, checked while it runs
 #pragma once
 
+#include "core/run_checkpoints.hpp"
 #include "segregation/invariants.hpp"
 #include "tumbler/kinematic_tumbler.hpp"
 #include "tumbler/pattern_metrics.hpp"
@@ -37,11 +38,13 @@ struct TumblerRunOptions {
 struct TumblerRecord {
     double t = 0;
     PatternMetrics metrics;
+    void checkpoint(StateIO& io) { io("t", t)("metrics", metrics); }
 };
 
 struct TumblerSnapshot {
     double t = 0;
     std::vector<double> phi_hat;
+    void checkpoint(StateIO& io) { io("t", t)("phi_hat", phi_hat); }
 };
 
 struct TumblerRunResult {
@@ -51,6 +54,10 @@ struct TumblerRunResult {
     double mass_start = 0, mass_end = 0;   // sum of phi h^2 over the bed
     BoundsMonitor after_bulk;          // extremes of phi - Phi and phi after every bulk step
     BoundsMonitor after_segregation;   // the same at the sample times (after the full step)
+    void checkpoint(StateIO& io) {
+        io("history", history)("frames", frames)("phi_hat_initial", phi_hat_initial)("mass_start", mass_start);
+        io("mass_end", mass_end)("after_bulk", after_bulk)("after_segregation", after_segregation);
+    }
 };
 
 /// Observer called after every step (for checks beyond the built-in invariants); may be empty.
@@ -58,9 +65,10 @@ struct TumblerRunResult {
 using TumblerStepObserver = std::function<void(const KinematicTumbler& tumbler, const BoundsMonitor& after_bulk_step,
                                                const std::vector<double>& phi_after_bulk)>;
 
-/// Runs `tumbler` from its current state to options.t_end (see above).
+/// Runs `tumbler` from its current state to options.t_end (see above); with `checkpoints`, writes
+/// and resumes checkpoints of the tumbler and of the result so far (core/run_checkpoints.hpp).
 TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
-                                       const TumblerStepObserver& observer = {});
+                                       const TumblerStepObserver& observer = {}, RunCheckpoints* checkpoints = nullptr);
 
 /// The regions of the pattern metrics for `flow` (docs/sect4.2_tumbler_kinematic.md, section 3).
 PatternRegions default_regions(const RollingDrumFlow& flow);

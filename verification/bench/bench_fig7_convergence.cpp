@@ -19,6 +19,8 @@
 // fig7_core.md, fig7_checks.md (the .md files are ready for docs/generated/), and every run under fig7_convergence/ (its scene
 // NAME.toml and its files NAME/); figures/bench_fig7_convergence.gp and bench_fig7_work.gp plot them.
 //
+// A study stopped (Ctrl-C, a job's time limit, a power cut) and run again with the same options skips
+// the runs that finished and resumes the others from their checkpoints (study/fig7_study.hpp).
 // Run: build/bench/bench_fig7_convergence [--data DIR] [options]    (--help lists them)
 //   the default is the real study, long (see docs/sect4.2_fig7_study.md); a test of
 //   everything in a few minutes:

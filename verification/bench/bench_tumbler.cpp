@@ -155,8 +155,9 @@ int main(int argc, char** argv) {
                   " s), tumbler " + verify::format(verify::median(coupled)) + " s");
     verify::write_data(options, "bench_tumbler_times.dat", times);
     write_modes(options, {{flow_explicit, dir + "/tumbler_flow_explicit"}, {flow, dir + "/tumbler_flow"}});
-    run_scene_file(kNoFeedbackScene, dir + "/tumbler_no_feedback");
-    run_scene_file(kKinematicScene, dir + "/tumbler_kinematic");
+    // Not timed: a run that finished is only written out again, an interrupted one resumes.
+    run_scene_file(kNoFeedbackScene, dir + "/tumbler_no_feedback", Resume::if_compatible);
+    run_scene_file(kKinematicScene, dir + "/tumbler_kinematic", Resume::if_compatible);
 
     CheckTable t("Sect. 4.2 at 100 cells per diameter, 25 s: cost of the coupling, pattern, Fig. 7d");
     const double ratio = verify::median(coupled) / verify::median(flow);

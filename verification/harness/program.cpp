@@ -19,7 +19,8 @@ namespace {
 const char* program_name = "verification program";
 
 /// The library's errors that escape a program end it like the CLI: the one-line message and
-/// exit status 2 (InputError) or 3 (InvariantError); anything else aborts as usual.
+/// exit status 2 (InputError), 3 (InvariantError) or 128 + the signal (Interrupted); anything
+/// else aborts as usual.
 [[noreturn]] void on_uncaught_exception() {
     try {
         if (const std::exception_ptr error = std::current_exception()) std::rethrow_exception(error);
@@ -29,6 +30,9 @@ const char* program_name = "verification program";
     } catch (const InvariantError& e) {
         std::cerr << program_name << ": stopped, invariant broken: " << e.what() << '\n';
         std::_Exit(kExitInvariant);
+    } catch (const Interrupted& e) {
+        std::cerr << program_name << ": " << e.what() << '\n';
+        std::_Exit(128 + e.signal());
     } catch (...) {
     }
     std::abort();

@@ -4,7 +4,6 @@
 #include "core/output.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
-#include "harness/side_by_side.hpp"
 #include "harness/time_series.hpp"
 #include "scenes/scene_kind.hpp"
 #include "tumbler/drum.hpp"
@@ -12,7 +11,6 @@
 #include <omp.h>
 #include <toml++/toml.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -132,30 +130,23 @@ std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
 Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     namespace fs = std::filesystem;
     const std::string dir = o.data_dir + "/" + o.study_dir + "/" + run.name, scene_path = dir + ".toml";
-    const std::string text = scene_text(run, o), wall_file = dir + "/wall_seconds.dat";
-    const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text &&
-                       fs::exists(dir + "/summary.dat") && fs::exists(wall_file);
+    const std::string text = scene_text(run, o);
+    const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text && fs::exists(dir + "/summary.dat");
     if (!reuse) {
         write_file_atomically(scene_path, text);
         omp_set_num_threads(o.threads);
-        // One thread: the run's CPU time is its thread's (other runs may share the process).
-        auto cpu_now = [&] { return o.threads == 1 ? thread_cpu_seconds() : cpu_seconds(); };
-        const double cpu0 = cpu_now();
-        const auto wall0 = std::chrono::steady_clock::now();
-        run_scene_file(scene_path, dir);
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-        DataTable table;
-        table.comment("bench_fig7_convergence: wall and CPU time (all threads) of the run of " + run.name + ".toml");
-        table.row({{"wall_seconds", wall}, {"cpu_seconds", cpu_now() - cpu0},
-                    {"threads", static_cast<double>(o.threads)}});
-        write_file_atomically(wall_file, table.str());
+        // A finished run of this scene and build is only written out again, an interrupted one
+        // continues from its checkpoint, any other runs from t = 0 (docs/scenes.md, "Checkpoints and
+        // resuming"): a killed study loses at most a checkpoint interval per run.
+        run_scene_file(scene_path, dir, Resume::if_compatible);
     }
     Fig7Result r;
     r.run = run;
-    const NamedTable times = read_named(wall_file);
-    r.wall = times.at(times.last(), "wall_seconds"), r.cpu = times.at(times.last(), "cpu_seconds");
     const NamedTable summary = read_named(dir + "/summary.dat"), history = read_named(dir + "/history.dat");
     const std::vector<double>& s = summary.last();
+    // The run's wall and CPU seconds over all its parts (on one thread its thread's alone: other runs
+    // share the process; core/progress.hpp run_cpu_seconds).
+    r.wall = summary.at(s, "wall_seconds"), r.cpu = summary.at(s, "cpu_seconds");
     r.steps = summary.at(s, "steps");
     r.dt_max_share = summary.at(s, "steps_dt_max") / r.steps;
     r.dt_mean = summary.at(s, "t_end") / r.steps;

@@ -11,6 +11,8 @@
 //
 // Every run is the paper's coupled drum with some keys changed and written, with its outputs, under
 // DIR/fig7_convergence/NAME.toml and NAME/ (so `granseg run NAME.toml` repeats it); no frames or VTK.
+// Each run keeps its checkpoint there: a study killed and started again skips the runs that
+// finished and resumes those that were interrupted.
 //   grid      each [flow] transport of --transports at each --cells; the explicit time stepping
 //             at each --explicit-cells
 //   dt        the first transport at the coarsest grid with dt_max times each --dt-coarse factor,
@@ -105,7 +107,9 @@ double fig7_scene_number(const char* section, const char* key, double fallback);
 std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& options);
 
 /// Runs `run` (or, with options.reuse, reuses an earlier run of the same scene text) and reads its
-/// quantities. InputError or InvariantError from the run pass through.
+/// quantities. A run whose checkpoint is of the same scene and build is only written out again if
+/// it finished, or continued if it was interrupted (Resume::if_compatible). InputError or
+/// InvariantError from the run pass through.
 Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& options);
 
 }  // namespace granseg::verify
