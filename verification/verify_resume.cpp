@@ -1,4 +1,4 @@
-// Runs that survive (docs/scenes.md, "Checkpoints and resuming"), checked as faults happen, on
+// Runs that survive (docs/checkpoints.md), checked as faults happen, on
 // build/granseg: a coupled drum killed with SIGKILL at a random moment and resumed with --resume
 // writes every file of the run that was never stopped, byte for byte but for the timing columns
 // (the expected files are that run's: an independent computation of the same steps); SIGTERM

@@ -1,6 +1,5 @@
 // Checkpoint files: a run's state on disk, written so that a kill at any moment leaves a whole
-// file, and read so that a wrong file is refused before any of it is used (docs/scenes.md,
-// "Checkpoints and resuming").
+// file, and read so that a wrong file is refused before any of it is used (docs/checkpoints.md).
 //
 //   solves      nothing: writes and reads the bytes of a checkpoint
 //   inputs      a Checkpoint (what wrote it, the time, named blocks of bytes: core/state_io.hpp)

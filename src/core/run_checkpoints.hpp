@@ -1,4 +1,4 @@
-// The checkpoints of one run (docs/scenes.md, "Checkpoints and resuming"): when a time loop
+// The checkpoints of one run (docs/checkpoints.md): when a time loop
 // writes its state, what it writes at its end, how a stop signal ends it, and how a run resumes
 // from its checkpoint, extends to a later t_end, or refuses a checkpoint it cannot continue.
 //

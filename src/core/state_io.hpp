@@ -1,5 +1,5 @@
 // Saving and restoring the state of a run, for checkpoints (core/checkpoint_file.hpp,
-// docs/scenes.md "Checkpoints and resuming").
+// docs/checkpoints.md).
 //
 //   solves      nothing: turns the members of the classes of a run into bytes and back
 //   inputs      each class's list of its members (below)

@@ -7,8 +7,7 @@
 //   3. run: the job computes and returns its files; the driver writes them all at the end.
 // So bad input never produces output, and a run that throws (InvariantError) leaves none either.
 // A kind that steps in time also writes checkpoints while it runs (core/run_checkpoints.hpp) into
-// its output directory, checkpoint.gsc, and resumes from them (docs/scenes.md, "Checkpoints and
-// resuming").
+// its output directory, checkpoint.gsc, and resumes from them (docs/checkpoints.md).
 // A new scene kind adds one row to scene_kinds() in registry.cpp and a section to docs/scenes.md.
 #pragma once
 

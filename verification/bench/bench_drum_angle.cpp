@@ -125,8 +125,7 @@ int main(int argc, char** argv) {
     verify::run_side_by_side(kJobs, lanes, [&](int j) {
         const std::string dir = run_dir(kRuns[j]);
         write_file_atomically(dir + ".toml", scene_text(base, kRuns[j]));
-        // A run that finished is only written out again, an interrupted one resumes (docs/scenes.md,
-        // "Checkpoints and resuming"); its wall time covers all its parts.
+        // A run that finished is only written out again, an interrupted one resumes (docs/checkpoints.md); its wall time covers all its parts.
         run_scene_file(dir + ".toml", dir, Resume::if_compatible);
         walls[j] = verify::last_row(dir + "/summary.dat").at("wall_seconds");
         std::fprintf(stderr, "bench_drum_angle: %s done in %.0f s\n", dir.c_str(), walls[j]);

@@ -136,8 +136,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         write_file_atomically(scene_path, text);
         omp_set_num_threads(o.threads);
         // A finished run of this scene and build is only written out again, an interrupted one
-        // continues from its checkpoint, any other runs from t = 0 (docs/scenes.md, "Checkpoints and
-        // resuming"): a killed study loses at most a checkpoint interval per run.
+        // continues from its checkpoint, any other runs from t = 0 (docs/checkpoints.md): a killed study loses at most a checkpoint interval per run.
         run_scene_file(scene_path, dir, Resume::if_compatible);
     }
     Fig7Result r;
