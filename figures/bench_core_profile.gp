@@ -1,7 +1,8 @@
 # The full model's drum at t_end along the vertical line through its axis: the small-particle share
 # phi_hat, the shear rate kappa_max - kappa_min and the granular temperature T against the height z
 # (one curve per grid). Grey lines: the core's edges z = +-r_core (r < d - layer, the coarsest grid's
-# run); dashed lines: the shear-rate thresholds below which the runs (ii) switch the segregation off.
+# run); dashed lines: the lowest and the highest shear-rate threshold of the runs (ii), at or below
+# which they switch the segregation off.
 # The flowing layer is the top of the bed, where the shear rate and T rise by decades; below it the
 # bed creeps (docs/sect4.2_results.md, "The core"; docs/generated/core_attribution.md).
 # needs: bench_core_attribution
@@ -27,7 +28,7 @@ do for [b = 1:blocks] {
 }
 stats runs u ($1 == 1 ? $4 : 1/0) nooutput
 thr_lo = STATS_min; thr_hi = STATS_max
-set multiplot layout 1,3 title "The full model at t_end on the vertical line through the drum's axis (grey: the core's edges; dashed: the thresholds of the runs (ii))"
+set multiplot layout 1,3 title "The full model at t_end on the vertical line through the drum's axis (grey: the core's edges; dashed: the lowest and highest threshold of the runs (ii))"
 set grid
 set ylabel "z [mm]"
 set key top left

@@ -7,13 +7,13 @@
 //         --thresholds value;
 //   (iii) S = 0: the transport of the uniform mixture alone, a control that must keep the core
 //         at the initial mixture (a uniform phi_hat stays uniform to round-off).
-// Attribution of the core's share at t_end: segregation in the creep = (i) - (ii); segregation in
-// the flowing layer and the transport of what it segregated into the core = (ii) - (iii); what the
+// Attribution of the core's share at t_end: segregation at or below the threshold (for a threshold
+// at the flowing layer's bottom: in the creeping bed) = (i) - (ii); segregation above it and the
+// transport of what it segregated into the core (by the creep and by the grid) = (ii) - (iii); what the
 // grid changes = those at the finer grid minus those at the coarser; what the time step changes =
 // those of (i), (ii) and (iii) at the first grid with dt_max times --dt-check minus those at dt_max.
-// Sampling errors: the jitter
-// of the core's share over the last --jitter-window before t_end (study/fig7_study.hpp), added in
-// quadrature for a difference.
+// Sampling errors: the jitter of the core's share over the last --jitter-window before t_end
+// (study/fig7_study.hpp), added in quadrature for a difference.
 // Writes to DIR: core_attribution.dat (a row per run), core_attribution.md (ready for
 // docs/generated/), core_profile.dat (run (i) at t_end along the vertical line through the axis:
 // z, T, shear rate, phi_hat; a block per grid), and every run under core_attribution/ (its scene
@@ -33,6 +33,7 @@
 #include "study/fig7_report.hpp"
 #include "study/fig7_study.hpp"
 #include "study/study_options.hpp"
+#include "tumbler/coupled_tumbler.hpp"
 #include "tumbler/drum.hpp"
 
 #include <boost/program_options.hpp>
@@ -43,6 +44,7 @@
 #include <map>
 #include <mutex>
 #include <sstream>
+#include <tuple>
 
 using namespace granseg;
 using namespace granseg::verify;
@@ -131,18 +133,20 @@ struct Share {
 
 Share core_of(const Fig7Result& r) { return {r.value[kCore], r.sampling[kCore]}; }
 
-/// Run (i) at t_end along the vertical line through the axis (lab frame): the mean of the cells
-/// whose centres lie within half a cell of x = 0, per height.
+/// Run (i) at t_end along the vertical line through the axis (lab frame): the mean of the bed's
+/// cells (Phi >= the scene's Phi_min, C2: where segregation acts) whose centres lie within half a
+/// cell of x = 0, per height.
 void append_profile(DataTable& table, const AttributionOptions& o, int cells) {
     const std::string dir = o.run.data_dir + "/" + o.run.study_dir + "/" + run_name(Part::full, 0, cells);
     const NamedTable fields = read_named(dir + "/fields_lab.dat"), summary = read_named(dir + "/summary.dat");
     const double h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / cells;
+    const double Phi_min = fig7_scene_number("segregation", "Phi_min", CoupledTumblerSetup{}.Phi_min);
     struct Sum {
         double n = 0, T = 0, shear = 0, hat = 0;
     };
     std::map<long, Sum> line;  // by height in units of h/2
     for (const std::vector<double>& row : fields.rows) {
-        if (fields.at(row, "inside") == 0 || !(fields.at(row, "Phi") > 0) || std::fabs(fields.at(row, "x")) > 0.5 * h * (1 + 1e-6)) continue;
+        if (fields.at(row, "inside") == 0 || !(fields.at(row, "Phi") >= Phi_min) || std::fabs(fields.at(row, "x")) > 0.5 * h * (1 + 1e-6)) continue;
         Sum& s = line[std::lround(2 * fields.at(row, "z") / h)];
         s.n += 1, s.T += fields.at(row, "T"), s.shear += fields.at(row, "shear_rate"), s.hat += fields.at(row, "phi_hat");
     }
@@ -171,37 +175,50 @@ void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Re
     }
     write_file_atomically(o.run.data_dir + "/core_attribution.dat", dat.str());
 
-    std::ostringstream md;
-    md << "| cells | dt_max (ms) | threshold (1/s) | (i) full model | (ii) no segregation at or below the threshold | (iii) S = 0 "
-          "| creep: (i) − (ii) | layer and transport: (ii) − (iii) |\n|---|---|---|---|---|---|---|---|\n";
-    std::map<std::pair<double, double>, std::vector<std::pair<Share, Share>>> parts;  // per (threshold, dt_max), per grid
+    // Rows by threshold, then the default step before the shorter one, then grid: per threshold its
+    // grids, the change between successive grids, and the change the shorter step makes.
+    struct Parts {
+        Share i, ii, iii;
+        Share below() const { return i - ii; }   // segregation at or below the threshold
+        Share above() const { return ii - iii; }  // segregation above it, and what carries its product in
+    };
+    std::map<std::tuple<double, double, int>, Parts> rows;  // (threshold, -dt_max, cells)
     for (std::size_t j = 0; j < runs.size(); ++j) {
         if (runs[j].part != Part::creep_off) continue;
         const Fig7Run& run = results[j].run;
         const Key key{run.cells, run.dt_max};
-        const Share i = core_of(*full.at(key)), ii = core_of(results[j]), iii = core_of(*none.at(key));
-        parts[{run.min_shear_rate, run.dt_max}].push_back({i - ii, ii - iii});
-        md << "| " << run.cells << " | " << fig7_number(1e3 * run.dt_max) << " | " << fig7_number(run.min_shear_rate) << " | " << i.cell()
-           << " | " << ii.cell() << " | " << iii.cell() << " | " << (i - ii).cell() << " | " << (ii - iii).cell() << " |\n";
+        rows[{run.min_shear_rate, -run.dt_max, run.cells}] = {core_of(*full.at(key)), core_of(results[j]), core_of(*none.at(key))};
     }
-    const auto change = [&](const std::string& what, double threshold, const std::pair<Share, Share>& a, const std::pair<Share, Share>& b) {
-        md << "| " << what << " | | " << fig7_number(threshold) << " | | | | " << (a.first - b.first).cell() << " | "
-           << (a.second - b.second).cell() << " |\n";
+    std::ostringstream md;
+    md << "| cells | dt_max (ms) | threshold (1/s) | (i) full model | (ii) no segregation at or below the threshold | (iii) S = 0 "
+          "| segregation at or below the threshold: (i) − (ii) | segregation above it and transport: (ii) − (iii) |\n"
+          "|---|---|---|---|---|---|---|---|\n";
+    const auto change = [&](const std::string& what, double threshold, const Parts& a, const Parts& b) {
+        md << "| " << what << " | | " << fig7_number(threshold) << " | | | | " << (a.below() - b.below()).cell() << " | "
+           << (a.above() - b.above()).cell() << " |\n";
     };
-    for (const auto& [key, by_grid] : parts)
-        for (std::size_t g = 1; g < by_grid.size(); ++g)
-            change("grid: " + std::to_string(o.grids[g]) + " − " + std::to_string(o.grids[g - 1]), key.first, by_grid[g], by_grid[g - 1]);
-    const double threshold = o.thresholds.front(), dt = o.dt_check * o.dt_max;
-    if (o.dt_check > 0.0)
-        change("dt: " + fig7_number(1e3 * dt) + " − " + fig7_number(1e3 * o.dt_max) + " ms", threshold, parts.at({threshold, dt}).front(),
-               parts.at({threshold, o.dt_max}).front());
+    const Parts* previous = nullptr;
+    for (auto it = rows.begin(); it != rows.end(); ++it) {
+        const auto& [threshold, minus_dt, cells] = it->first;
+        const Parts& p = it->second;
+        md << "| " << cells << " | " << fig7_number(-1e3 * minus_dt) << " | " << fig7_number(threshold) << " | " << p.i.cell() << " | "
+           << p.ii.cell() << " | " << p.iii.cell() << " | " << p.below().cell() << " | " << p.above().cell() << " |\n";
+        if (previous && -minus_dt == o.dt_max && std::get<0>(std::prev(it)->first) == threshold)
+            change("grid: " + std::to_string(cells) + " − " + std::to_string(std::get<2>(std::prev(it)->first)), threshold, p, *previous);
+        if (-minus_dt != o.dt_max) {
+            const auto coarse = rows.find({threshold, -o.dt_max, cells});
+            if (coarse != rows.end())
+                change("dt: " + fig7_number(-1e3 * minus_dt) + " − " + fig7_number(1e3 * o.dt_max) + " ms", threshold, p, coarse->second);
+        }
+        previous = &p;
+    }
     md << "\nThe core's (r < d − layer) small-particle share at t_end = " << fig7_number(o.run.t_end) << " s ± its jitter over the last "
        << fig7_number(o.run.jitter_window) << " s; muscl transport, packing feedback on. Written by bench_core_attribution.\n";
     write_file_atomically(o.run.data_dir + "/core_attribution.md", md.str());
 
     DataTable profile;
     profile.comment("bench_core_attribution: run (i) at t_end on the vertical line through the axis (lab frame, mean of the cells within "
-                    "h/2 of x = 0): z (m), T (m^2/s^2), shear_rate kappa_max - kappa_min (1/s), phi_hat; one block per grid");
+                    "h/2 of x = 0 with Phi >= Phi_min): z (m), T (m^2/s^2), shear_rate kappa_max - kappa_min (1/s), phi_hat; one block per grid");
     for (int n : o.grids) append_profile(profile, o, n);
     write_file_atomically(o.run.data_dir + "/core_profile.dat", profile.str());
 }
