@@ -22,7 +22,7 @@
 //
 // Run: build/bench/bench_core_attribution [--data DIR] [options]    (--help lists them)
 //   the default (50 and 70 cells, 25 s, dt_max 0.5 ms, three thresholds, the time step halved at 50
-//   cells) takes about an hour of CPU;
+//   cells) takes about 40 CPU-minutes;
 //   a test of everything in a few minutes: --grids 26 --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
 #include "core/output.hpp"

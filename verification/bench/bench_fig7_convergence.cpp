@@ -42,7 +42,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
-#include <iostream>
 #include <mutex>
 #include <sstream>
 

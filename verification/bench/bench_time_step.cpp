@@ -24,7 +24,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
-#include <iostream>
 #include <mutex>
 #include <sstream>
 
