@@ -2,7 +2,9 @@
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
 // repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, the
 // segregation sub-step in every flow step, the flow without packing feedback as the flow alone, a
-// passive tracer riding in a segregating drum, and a drum of one phase only.
+// passive tracer riding in a segregating drum, a drum of one phase only, and the diagnostic that
+// switches the segregation off below a shear rate.
+#include "direction/segregation_direction.hpp"
 #include "flow_run/bed.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
@@ -12,6 +14,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -219,6 +222,76 @@ BOOST_AUTO_TEST_CASE(a_drum_of_small_particles_only_runs_with_an_empty_phase) {
     const Grid& g = tumbler.grid();
     for (std::size_t c = 0; c < g.cells(); ++c) not_all += g.is_inside(c) && tumbler.phi()[c] != tumbler.flow().Phi()[c];
     BOOST_TEST(not_all == 0);
+}
+
+// [segregation] diagnostic_min_shear_rate: off (0, the default) the sub-step's d_s is bitwise the
+// direction of Sect. 2.3 with D1's own threshold, recomputed here from the flow's fields; above
+// every cell's shear rate nothing segregates (phi_hat stays 1/2 bitwise, as with S = 0).
+BOOST_AUTO_TEST_CASE(the_shear_rate_diagnostic_is_off_by_default_and_stops_all_segregation_above_every_shear_rate) {
+    CoupledTumblerSetup setup;
+    setup.drum.cells_per_diameter = 26;
+    BOOST_TEST(setup.diagnostic_min_shear_rate == 0.0);
+    CoupledTumblerSetup blocked = setup;
+    blocked.diagnostic_min_shear_rate = 1e6;  // 1/s, far above any shear rate of this drum
+    CoupledTumbler a(setup), b(blocked);
+    for (int n = 0; n < 200; ++n) a.step(), b.step();
+    const Grid& g = a.grid();
+    const FlowSolver& f = a.flow();
+    DirectionOptions before;  // the sub-step's options without the diagnostic
+    before.planar_xz = true;
+    long differ = 0, not_half = 0, segregating = 0;
+    double largest_shear = 0.0;
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        if (!g.is_inside(c)) continue;
+        not_half += b.phi()[c] != 0.5 * b.flow().Phi()[c];
+        largest_shear = std::max(largest_shear, b.direction(c).principal_shear);
+        if (!(f.Phi()[c] >= setup.Phi_min)) continue;
+        Eigen::Matrix3d G;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) G(i, j) = f.velocity_gradient(i, j)[c];
+        const Eigen::Vector3d d = segregation_direction(G, {f.u(0)[c], f.u(1)[c], f.u(2)[c]}, before).d_s;
+        differ += d(0) != a.d_s(0)[c] || d(2) != a.d_s(2)[c];
+        segregating += d.squaredNorm() > 0.0;
+    }
+    BOOST_TEST(differ == 0);
+    BOOST_TEST(segregating > 0);
+    BOOST_TEST(largest_shear > 0.0);
+    BOOST_TEST(largest_shear < blocked.diagnostic_min_shear_rate);
+    BOOST_TEST(not_half == 0);
+}
+
+// A moderate threshold (the median shear rate of the bed): the creeping cells at or below it get no
+// segregation velocity, the faster-sheared ones keep theirs, and the drum still segregates.
+BOOST_AUTO_TEST_CASE(a_moderate_shear_rate_threshold_switches_only_the_creeping_cells_off) {
+    CoupledTumblerSetup setup;
+    setup.drum.cells_per_diameter = 26;
+    CoupledTumbler probe(setup);
+    for (int n = 0; n < 200; ++n) probe.step();
+    const Grid& g = probe.grid();
+    std::vector<double> shear;
+    for (std::size_t c = 0; c < g.cells(); ++c)
+        if (g.is_inside(c) && probe.flow().Phi()[c] >= setup.Phi_min) shear.push_back(probe.direction(c).principal_shear);
+    std::nth_element(shear.begin(), shear.begin() + shear.size() / 2, shear.end());
+    setup.diagnostic_min_shear_rate = shear[shear.size() / 2];
+    BOOST_TEST(setup.diagnostic_min_shear_rate > 1e-6);  // above D1's own threshold
+
+    CoupledTumbler tumbler(setup);
+    for (int n = 0; n < 200; ++n) tumbler.step();
+    long creeping = 0, creeping_moving = 0, sheared = 0, sheared_moving = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        if (!g.is_inside(c) || !(tumbler.flow().Phi()[c] >= setup.Phi_min)) continue;
+        const bool moves = tumbler.frozen().a[0][c] != 0.0 || tumbler.frozen().a[2][c] != 0.0;
+        const SegregationDirection d = tumbler.direction(c);
+        if (d.principal_shear <= setup.diagnostic_min_shear_rate) ++creeping, creeping_moving += moves;
+        else if (d.segregates()) ++sheared, sheared_moving += moves;
+    }
+    BOOST_TEST(creeping > 0);
+    BOOST_TEST(creeping_moving == 0);
+    BOOST_TEST(sheared > 0);
+    BOOST_TEST(sheared_moving == sheared);
+    long not_half = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) not_half += g.is_inside(c) && tumbler.phi()[c] != 0.5 * tumbler.flow().Phi()[c];
+    BOOST_TEST(not_half > 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

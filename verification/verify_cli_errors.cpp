@@ -146,6 +146,8 @@ std::vector<Case> cli_cases(const fs::path& out) {
         bad_scene("tumbler, a bed less than two cells deep", "[drum] fill_height:", coupled + "[drum]\ncells_per_diameter = 26\nfill_height = 0.005\n"),
         bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),
         bad_scene("tumbler, Phi_min = 1", "[segregation] Phi_min:", coupled + "[segregation]\nPhi_min = 1\n"),
+        bad_scene("tumbler, a negative shear-rate threshold", "[segregation] diagnostic_min_shear_rate:",
+                  coupled + "[segregation]\ndiagnostic_min_shear_rate = -1\n"),
         bad_scene("tumbler, no gravity (no bed to start from)", "[drum] gravity:", coupled + "[drum]\ngravity = 0\n"),
         bad_scene("tumbler, T0 = 0 (no yield pressure holds the bed)", "[material] T0:", coupled + "[material]\nT0 = 0\n"),
         bad_scene("bed-at-rest, T0 = 0 under gravity", "[material] T0:",

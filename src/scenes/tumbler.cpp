@@ -57,6 +57,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.segregation.limiter = parse_limiter(scene.choice(seg, "limiter", limiter_names(), "mc"));
     s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
     s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);
+    s.diagnostic_min_shear_rate = scene.number(seg, "diagnostic_min_shear_rate", Range::at_least(0), s.diagnostic_min_shear_rate);
     s.packing_feedback = scene.flag("coupling", "packing_feedback", s.packing_feedback);
     if (scene.has("coupling", "mixture")) {
         if (s.packing_feedback)

@@ -193,27 +193,29 @@ void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char*
     }
 }
 
+SegregationDirection CoupledTumbler::direction(std::size_t c) const {
+    const FlowSolver& f = flow_;
+    DirectionOptions options;
+    options.planar_xz = grid().n[1] == 1;
+    options.shear_threshold = std::max(options.shear_threshold, setup_.diagnostic_min_shear_rate);  // (D1)
+    Eigen::Matrix3d G;
+    for (int b = 0; b < 3; ++b)
+        for (int k = 0; k < 3; ++k) G(b, k) = f.velocity_gradient(b, k)[c];
+    const Eigen::Vector3d u(f.u(0)[c], f.u(1)[c], f.u(2)[c]);  // relative to the drum
+    return segregation_direction(G, u, options);                // (Sect. 2.3)
+}
+
 void CoupledTumbler::update_segregation_velocity() {
     const FlowSolver& f = flow_;
     const Grid& g = grid();
-    const bool planar = g.n[1] == 1;
-    DirectionOptions options;
-    options.planar_xz = planar;
     const Vec3 gv = f.frame().gravity_at(f.time());  // gravity in the drum frame
     const Eigen::Vector3d gravity(gv[0], gv[1], gv[2]);
-    const std::vector<double>* grad[3][3];
-    for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) grad[b][a] = &f.velocity_gradient(b, a);
     frozen_.Phi = f.Phi();
     for (std::size_t c = 0; c < g.cells(); ++c) {
         Eigen::Vector3d d_s = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
         if (g.is_inside(c) && f.Phi()[c] >= setup_.Phi_min) {  // (assumption C2)
-            Eigen::Matrix3d G;
-            for (int b = 0; b < 3; ++b)
-                for (int k = 0; k < 3; ++k) G(b, k) = (*grad[b][k])[c];
-            const Eigen::Vector3d u(f.u(0)[c], f.u(1)[c], f.u(2)[c]);  // relative to the drum
-            d_s = segregation_direction(G, u, options).d_s;               // (Sect. 2.3)
-            a = segregation_velocity(setup_.S, f.T()[c], d_s, gravity);   // (eq. 46)
+            d_s = direction(c).d_s;
+            a = segregation_velocity(setup_.S, f.T()[c], d_s, gravity);  // (eq. 46)
         }
         for (int axis = 0; axis < 3; ++axis)
             if (!frozen_.a[axis].empty()) frozen_.a[axis][c] = a(axis), d_s_[axis][c] = d_s(axis);

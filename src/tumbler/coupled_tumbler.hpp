@@ -41,6 +41,7 @@
 
 #include "closures/material.hpp"
 #include "core/state_io.hpp"
+#include "direction/segregation_direction.hpp"
 #include "flow/flow_solver.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/bulk_transport_fct.hpp"
@@ -63,6 +64,10 @@ struct CoupledTumblerSetup {
     double S = 1.0;                  // S0 of eq. (46), s/m (Sect. 4.2); 0: no segregation
     SegregationOptions segregation;  // scheme, limiter, cfl of the segregation sub-step
     double Phi_min = 0.05;           // no segregation in cells with Phi below this (C2)
+    /// A diagnostic, not a physics option: no segregation in cells whose shear rate
+    /// kappa_max - kappa_min (1/s) is at or below this, as if no shear plane existed there (it
+    /// raises D1's threshold); 0: off. Switches the segregation off in the slowly creeping bed.
+    double diagnostic_min_shear_rate = 0.0;
     bool packing_feedback = true;    // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
     /// Without packing feedback: the phi_hat whose Phi_rcp, Phi_co the closures keep; NaN: the
     /// initial bed's mean (C3). Lets a tracer (S = 0) ride on the flow of another mixture.
@@ -114,6 +119,10 @@ public:
     /// (drum frame, sign-normalised; 0 where there is no segregation).
     const FrozenFields& frozen() const { return frozen_; }
     const std::vector<double>& d_s(int axis) const { return d_s_[axis]; }
+    /// The segregation direction (Sect. 2.3) in cell c from the flow's current velocity gradient and
+    /// velocity, both relative to the drum, with D1's threshold raised to the setup's
+    /// diagnostic_min_shear_rate; its principal_shear is the cell's shear rate kappa_max - kappa_min.
+    SegregationDirection direction(std::size_t c) const;
     long segregation_substeps() const { return substeps_; }
     long segregation_steps() const { return segregation_steps_; }
     /// Largest amount the segregation solver's round-off guard moved phi back into [0, Phi].

@@ -42,7 +42,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
-#include <iostream>
 #include <mutex>
 #include <sstream>
 
@@ -71,26 +70,13 @@ Fig7Options parse(int argc, char** argv) {
         "dt-coarse", po::value(&dt_coarse)->default_value(dt_coarse), "dt_max factors of the dt study at the coarsest grid")(
         "dt-fine", po::value(&dt_fine)->default_value(dt_fine), "dt_max factors of the dt study at the finest grid")(
         "no-dt-study", "skip the dt study")("no-core-study", "skip the tracer and T_floor runs (check d)")(
-        "t-end", po::value(&o.t_end)->default_value(o.t_end), "s, length of every run")(
-        "average-from", po::value(&o.average_from)->default_value(o.average_from), "s, start of the angle's and layer's averages")(
-        "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
-        "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs")(
-        "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
-        "lanes", po::value(&o.lanes)->default_value(o.lanes), "runs side by side, one thread each (0: one per core)")(
-        "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
-    po::variables_map vm;
-    try {
-        po::store(po::parse_command_line(argc, argv, d), vm);
-        po::notify(vm);
-    } catch (const po::error& e) {
-        std::cerr << "bench_fig7_convergence: " << e.what() << " (allowed: the options of --help)\n";
-        std::exit(kExitBadInput);
-    }
-    if (vm.count("help")) std::cout << d << "\n", std::exit(0);
+        "T-floor-low", po::value(&o.T_floor_low)->default_value(o.T_floor_low), "m^2/s^2, T_floor of the floor runs");
+    add_run_options(d, o);
+    const po::variables_map vm = parse_study_command_line(kProgram, argc, argv, d, o);
     o.cells = cell_list(kProgram, "cells", cells), o.explicit_cells = cell_list(kProgram, "explicit-cells", explicit_cells);
     o.transports = transport_list(kProgram, transports);
     o.dt_coarse = number_list(kProgram, "dt-coarse", dt_coarse, 0.0, 1.0), o.dt_fine = number_list(kProgram, "dt-fine", dt_fine, 0.0, 1.0);
-    o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study"), o.reuse = vm.count("reuse") > 0;
+    o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study");
     if (o.cells.size() < 3) bad_option("cells", "\"" + cells + "\" has fewer than three grids", "three or more");
     if (o.explicit_cells.size() == 1) bad_option("explicit-cells", "one grid", "none, or two or more");
     if (o.dt_study && (o.dt_coarse.empty() || o.dt_fine.empty()))

@@ -24,7 +24,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
-#include <iostream>
 #include <mutex>
 #include <sstream>
 
@@ -68,25 +67,11 @@ DtStudyOptions parse(int argc, char** argv) {
     d.add_options()("help", "this list")("data", po::value(&o.run.data_dir)->default_value(o.run.data_dir), "output directory")(
         "grids", po::value(&grids)->default_value(grids), "CELLS:DT_MAX,... per grid, ';' between grids, largest dt_max first (the default step)")(
         "transports", po::value(&transports)->default_value(transports), "[flow] transport of each series")(
-        "parts", po::value(&parts)->default_value(parts), "no-feedback, feedback or both ([coupling] packing_feedback)")(
-        "t-end", po::value(&o.run.t_end)->default_value(o.run.t_end), "s, length of every run")(
-        "average-from", po::value(&o.run.average_from)->default_value(o.run.average_from), "s, start of the angle's and layer's averages")(
-        "jitter-window", po::value(&o.run.jitter_window)->default_value(o.run.jitter_window), "s before t_end for a value's jitter")(
-        "threads", po::value(&o.run.threads)->default_value(o.run.threads), "OpenMP threads of every run")(
-        "lanes", po::value(&o.run.lanes)->default_value(o.run.lanes), "runs side by side, one thread each (0: one per core)")(
-        "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
-    po::variables_map vm;
-    try {
-        po::store(po::parse_command_line(argc, argv, d), vm);
-        po::notify(vm);
-    } catch (const po::error& e) {
-        std::cerr << kProgram << ": " << e.what() << " (allowed: the options of --help)\n";
-        std::exit(kExitBadInput);
-    }
-    if (vm.count("help")) std::cout << d << "\n", std::exit(0);
+        "parts", po::value(&parts)->default_value(parts), "no-feedback, feedback or both ([coupling] packing_feedback)");
+    add_run_options(d, o.run);
+    parse_study_command_line(kProgram, argc, argv, d, o.run);
     o.grids = grid_list(grids);
     o.run.transports = transport_list(kProgram, transports);
-    o.run.reuse = vm.count("reuse") > 0;
     if (parts == "no-feedback") o.feedback = {false};
     else if (parts == "feedback") o.feedback = {true};
     else if (parts != "no-feedback,feedback") bad_option(kProgram, "parts", "\"" + parts + "\"", "no-feedback, feedback, no-feedback,feedback");

@@ -57,6 +57,8 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     flow.insert_or_assign("dt_max", run.dt_max);
     if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (!run.packing_feedback) section("coupling").insert_or_assign("packing_feedback", false);
+    if (!std::isnan(run.S)) section("segregation").insert_or_assign("S", run.S);
+    if (run.min_shear_rate > 0) section("segregation").insert_or_assign("diagnostic_min_shear_rate", run.min_shear_rate);
     if (is_tracer(run.kind)) {
         // The tracer fills the drum's own core at that grid: r < d - layer, the layer measured by
         // the reference transport's grid run of the same cells (run before the tracer runs).
@@ -68,7 +70,7 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
         section("initial").insert_or_assign("tracer", std::string(expression));
     }
     std::ostringstream text;
-    text << "# bench_fig7_convergence: " << kScene << " as run " << run.name << "\n" << scene << "\n";
+    text << "# " << o.program << ": " << kScene << " as run " << run.name << "\n" << scene << "\n";
     return text.str();
 }
 

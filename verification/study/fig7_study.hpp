@@ -51,6 +51,7 @@ struct Fig7Options {
     int threads = 1;                             // OpenMP threads of every run
     int lanes = 0;                               // runs side by side (0: one per core; > 1 needs threads = 1)
     bool reuse = false;                          // reuse a run whose scene text is unchanged
+    std::string program = "bench_fig7_convergence";  // named in each run's scene file
 
     /// dt_max of a run at `cells` with the dt study's factor.
     double dt_max(int cells, double factor = 1.0) const { return factor * dt_ref * kDtRefCells / cells; }
@@ -67,6 +68,8 @@ struct Fig7Run {
     std::string transport;      // [flow] transport ("" for the explicit time stepping)
     double dt_max = 0;          // s
     bool packing_feedback = true;  // [coupling] packing_feedback
+    double S = NAN;                // [segregation] S; NaN: the scene's
+    double min_shear_rate = 0;     // [segregation] diagnostic_min_shear_rate, 1/s (0: off, the scene's)
 };
 
 /// The Fig. 7 quantities, in the order of every table: name, unit, whether it is a time average

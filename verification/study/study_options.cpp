@@ -82,4 +82,30 @@ void check_run_options(const std::string& program, Fig7Options& o) {
         bad_option(program, "lanes", std::to_string(o.lanes), "0..256, and 1 unless --threads 1");
 }
 
+void add_run_options(boost::program_options::options_description& d, Fig7Options& o) {
+    namespace po = boost::program_options;
+    d.add_options()("t-end", po::value(&o.t_end)->default_value(o.t_end), "s, length of every run")(
+        "average-from", po::value(&o.average_from)->default_value(o.average_from), "s, start of the angle's and layer's averages")(
+        "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
+        "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
+        "lanes", po::value(&o.lanes)->default_value(o.lanes), "runs side by side, one thread each (0: one per core)")(
+        "reuse", "reuse a run whose scene text is unchanged (after changing the code: do not)");
+}
+
+boost::program_options::variables_map parse_study_command_line(const std::string& program, int argc, char** argv,
+                                                               const boost::program_options::options_description& d, Fig7Options& o) {
+    namespace po = boost::program_options;
+    po::variables_map vm;
+    try {
+        po::store(po::parse_command_line(argc, argv, d), vm);
+        po::notify(vm);
+    } catch (const po::error& e) {
+        std::cerr << program << ": " << e.what() << " (allowed: the options of --help)\n";
+        std::exit(kExitBadInput);
+    }
+    if (vm.count("help")) std::cout << d << "\n", std::exit(0);
+    o.reuse = vm.count("reuse") > 0;
+    return vm;
+}
+
 }  // namespace granseg::verify

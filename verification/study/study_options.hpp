@@ -4,6 +4,8 @@
 
 #include "study/fig7_study.hpp"
 
+#include <boost/program_options.hpp>
+
 #include <string>
 #include <vector>
 
@@ -27,5 +29,14 @@ std::vector<std::string> transport_list(const std::string& program, const std::s
 /// The options every drum study shares: t_end, average_from, jitter_window, threads and lanes
 /// (lanes = 0 becomes one per core with one thread per run, else 1); bad_option for one out of range.
 void check_run_options(const std::string& program, Fig7Options& o);
+
+/// Adds to `d` the command-line options every drum study shares, stored into `o`: t-end,
+/// average-from, jitter-window, threads, lanes, reuse (read the last with `reused`).
+void add_run_options(boost::program_options::options_description& d, Fig7Options& o);
+
+/// Parses the command line with `d`: --help prints `d` and exits 0; an unknown or malformed option
+/// stops with "PROGRAM: WHAT (allowed: the options of --help)", exit 2. Sets o.reuse from --reuse.
+boost::program_options::variables_map parse_study_command_line(const std::string& program, int argc, char** argv,
+                                                               const boost::program_options::options_description& d, Fig7Options& o);
 
 }  // namespace granseg::verify
