@@ -15,8 +15,8 @@
 #include <omp.h>
 #include <sys/resource.h>
 
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -213,8 +213,19 @@ void restore(T& object, const std::string& bytes) {
 /// What the coupled drum's steps produce, without the wall-clock timers.
 std::vector<std::vector<double>> observed(const CoupledTumbler& t) {
     const FlowSolver& f = t.flow();
-    return {f.Phi(), f.Phi_before(), f.u(0), f.u(2), f.T(), f.mass_flux(0), f.mass_flux(2), t.phi(), t.tracer(),
-            t.frozen().a[0], t.frozen().a[2], t.d_s(0), t.d_s(2),
+    return {f.Phi(),
+            f.Phi_before(),
+            f.u(0),
+            f.u(2),
+            f.T(),
+            f.mass_flux(0),
+            f.mass_flux(2),
+            t.phi(),
+            t.tracer(),
+            t.frozen().a[0],
+            t.frozen().a[2],
+            t.d_s(0),
+            t.d_s(2),
             {f.time(), f.last_dt(), double(f.steps()), double(f.counters().newton), double(f.counters().krylov),
              double(f.counters().temperature_iterations), double(t.segregation_substeps()), double(t.segregation_steps()),
              t.largest_correction(), t.max_excess(), t.min_phi(), t.largest_bulk_clip()}};

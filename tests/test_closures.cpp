@@ -55,10 +55,8 @@ BOOST_AUTO_TEST_CASE(material_section_overrides_and_validates) {
     BOOST_CHECK_NO_THROW(s.finish());
 
     BOOST_CHECK_THROW(read_material(SceneFile::parse("[material]\neta0 = -1\n", "m.toml")), InputError);
-    BOOST_CHECK_THROW(read_material(SceneFile::parse("[material]\ng_law = \"lun-savage\"\nbeta = 2\n", "m.toml")),
-                      InputError);
-    BOOST_CHECK_THROW(read_material(SceneFile::parse("[material]\npacking_table = \"/nonexistent\"\n", "m.toml")),
-                      InputError);
+    BOOST_CHECK_THROW(read_material(SceneFile::parse("[material]\ng_law = \"lun-savage\"\nbeta = 2\n", "m.toml")), InputError);
+    BOOST_CHECK_THROW(read_material(SceneFile::parse("[material]\npacking_table = \"/nonexistent\"\n", "m.toml")), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(packing_table_parser_rejects_bad_rows) {

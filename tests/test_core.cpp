@@ -17,7 +17,7 @@ BOOST_AUTO_TEST_CASE(data_table_names_its_columns_first) {
     t.comment("source: test");
     t.row({{"z", 0.5}, {"phi", 0.25}});
     BOOST_TEST(t.str() == "# z phi\n# source: test\n0.5 0.25\n");
-    BOOST_CHECK_THROW(t.row({{"z", 1.0}}), InvariantError);                  // a column missing
+    BOOST_CHECK_THROW(t.row({{"z", 1.0}}), InvariantError);                 // a column missing
     BOOST_CHECK_THROW(t.row({{"phi", 0.25}, {"z", 0.5}}), InvariantError);  // columns swapped
     TableRow r{{"z", 1.0}};
     t.row(r.add("phi", 0.5));

@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(fill_fraction_and_angle_of_repose) {
     TimeAverage angle(1.0);
     angle.add(0.5, 90.0);  // before `from`: left out
     angle.add(1.0, 20.0);
-    angle.add(2.0, NAN);   // no surface crossing: left out
+    angle.add(2.0, NAN);  // no surface crossing: left out
     angle.add(3.0, 30.0);
     BOOST_TEST(angle.samples() == 2);
     BOOST_TEST(angle.mean() == 25.0);
@@ -161,7 +161,8 @@ BOOST_AUTO_TEST_CASE(without_packing_feedback_the_flow_is_the_flow_alone) {
     const Grid grid = setup.drum.grid();
     FlowSolver alone(grid, setup.material, settings, setup.drum.frame());
     const std::vector<double> zero(grid.cells(), 0.0), T(grid.cells(), settings.T_floor);
-    alone.set_state(drum_bed_at_rest(setup.drum, grid, setup.material, settings.phi_hat, settings.T_floor), {zero, zero, zero}, T);
+    alone.set_state(drum_bed_at_rest(setup.drum, grid, setup.material, settings.phi_hat, settings.T_floor), {zero, zero, zero},
+                    T);
     for (int n = 0; n < 100; ++n) tumbler.step(), alone.step();
     BOOST_TEST(alone.time() == tumbler.time());
     long differ = 0;
@@ -282,8 +283,10 @@ BOOST_AUTO_TEST_CASE(a_moderate_shear_rate_threshold_switches_only_the_creeping_
         if (!g.is_inside(c) || !(tumbler.flow().Phi()[c] >= setup.Phi_min)) continue;
         const bool moves = tumbler.frozen().a[0][c] != 0.0 || tumbler.frozen().a[2][c] != 0.0;
         const SegregationDirection d = tumbler.direction(c);
-        if (d.principal_shear <= setup.diagnostic_min_shear_rate) ++creeping, creeping_moving += moves;
-        else if (d.segregates()) ++sheared, sheared_moving += moves;
+        if (d.principal_shear <= setup.diagnostic_min_shear_rate)
+            ++creeping, creeping_moving += moves;
+        else if (d.segregates())
+            ++sheared, sheared_moving += moves;
     }
     BOOST_TEST(creeping > 0);
     BOOST_TEST(creeping_moving == 0);

@@ -21,10 +21,10 @@ using namespace granseg::verify::docs;
 
 BOOST_AUTO_TEST_CASE(numbers_agree_to_the_precision_the_page_prints) {
     const Tokens page = tokens_of("fitted p | 0.9382 | 1");
-    BOOST_TEST(agrees(tokens_of("fitted p   |   0.93824 | 1"), page));   // blanks collapse; within half a unit
-    BOOST_TEST(!agrees(tokens_of("fitted p | 0.93826 | 1"), page));      // beyond half a unit
-    BOOST_TEST(!agrees(tokens_of("fitted q | 0.9382 | 1"), page));       // a word differs
-    BOOST_TEST(!agrees(tokens_of("fitted p | 0.9382 | 1 | 2"), page));   // a number more
+    BOOST_TEST(agrees(tokens_of("fitted p   |   0.93824 | 1"), page));  // blanks collapse; within half a unit
+    BOOST_TEST(!agrees(tokens_of("fitted p | 0.93826 | 1"), page));     // beyond half a unit
+    BOOST_TEST(!agrees(tokens_of("fitted q | 0.9382 | 1"), page));      // a word differs
+    BOOST_TEST(!agrees(tokens_of("fitted p | 0.9382 | 1 | 2"), page));  // a number more
     BOOST_TEST(agrees(tokens_of("g = 1.577e-06"), tokens_of("g = 1.6e-06")));
     BOOST_TEST(!agrees(tokens_of("g = 1.577e-06"), tokens_of("g = 1.5e-06")));
 }
@@ -72,8 +72,9 @@ BOOST_AUTO_TEST_CASE(generated_blocks_are_found_and_replaced) {
 }
 
 BOOST_AUTO_TEST_CASE(value_spans_are_found_with_their_place) {
-    const std::string page = "a <!-- value: docs/t.md \"x\" -->0.93<!-- /value --> b <!-- value: build/d.dat:c@last -->12<!-- /value -->\n"
-                             "```\n<!-- value: in a code block -->1<!-- /value -->\n```\n";
+    const std::string page =
+        "a <!-- value: docs/t.md \"x\" -->0.93<!-- /value --> b <!-- value: build/d.dat:c@last -->12<!-- /value -->\n"
+        "```\n<!-- value: in a code block -->1<!-- /value -->\n```\n";
     std::string error;
     const auto spans = value_spans(page, error);
     BOOST_TEST(error.empty());
@@ -104,9 +105,9 @@ BOOST_AUTO_TEST_CASE(sources_parse_and_bad_ones_say_why) {
     BOOST_TEST_REQUIRE(data.has_value());
     BOOST_TEST(data->data);
     BOOST_TEST(data->row == "cells=100");
-    BOOST_TEST(!parse_source("docs/x.md angle", error).has_value());        // no quoted match
-    BOOST_TEST(!parse_source("../x.md \"a\"", error).has_value());         // outside docs/ and build/
-    BOOST_TEST(!parse_source("docs/x.md \"a\" *0", error).has_value());    // a scale must be positive
+    BOOST_TEST(!parse_source("docs/x.md angle", error).has_value());     // no quoted match
+    BOOST_TEST(!parse_source("../x.md \"a\"", error).has_value());       // outside docs/ and build/
+    BOOST_TEST(!parse_source("docs/x.md \"a\" *0", error).has_value());  // a scale must be positive
 }
 
 BOOST_AUTO_TEST_CASE(sources_read_lines_table_cells_and_data_columns) {
@@ -114,17 +115,18 @@ BOOST_AUTO_TEST_CASE(sources_read_lines_table_cells_and_data_columns) {
     const std::string log = "a. ring | 0.4357 | >= 0 | - | PASS\n# d. pattern at t = 25 s: index 0.89, ring 0.9357\n";
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"d. pattern\" #-1", error), log, error) == 0.9357);
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"d. pattern\" #2", error), log, error) == 0.89);
-    BOOST_TEST(*source_value(*parse_source("build/results/v.log \"index\"", error), log, error) == 0.89);  // after MATCH
+    BOOST_TEST(*source_value(*parse_source("build/results/v.log \"index\"", error), log, error) == 0.89);     // after MATCH
     BOOST_TEST(*source_value(*parse_source("build/results/v.log \"ring\"~2", error), log, error) == 0.9357);  // the second line
     BOOST_TEST(!source_value(*parse_source("build/results/v.log \"ring\"~3", error), log, error).has_value());
     BOOST_TEST(!source_value(*parse_source("build/results/v.log \"d. pattern\" #4", error), log, error).has_value());
     BOOST_TEST(!source_value(*parse_source("build/results/v.log \"no such line\"", error), log, error).has_value());
-    const std::string table = "| quantity | at 100 cells | distance to the limit | limit |\n|---|---|---|---|\n"
-                              "| angle (deg) | 23.4 ± 0.02 | – | – |\n| index | 0.936 ± 0.001 | -0.014 | 0.95 |\n\nFootnote 7.\n";
+    const std::string table =
+        "| quantity | at 100 cells | distance to the limit | limit |\n|---|---|---|---|\n"
+        "| angle (deg) | 23.4 ± 0.02 | – | – |\n| index | 0.936 ± 0.001 | -0.014 | 0.95 |\n\nFootnote 7.\n";
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"index\" | limit", error), table, error) == 0.95);
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"angle\" | at 100 #2 *10", error), table, error) == 0.2);
     BOOST_TEST(*source_value(*parse_source("docs/t.md \"index\" [limit]", error), table, error) == 0.95);  // inside a table row
-    BOOST_TEST(!source_value(*parse_source("docs/t.md \"angle\" | limit", error), table, error).has_value());  // a dash
+    BOOST_TEST(!source_value(*parse_source("docs/t.md \"angle\" | limit", error), table, error).has_value());     // a dash
     BOOST_TEST(!source_value(*parse_source("docs/t.md \"Footnote\" | limit", error), table, error).has_value());  // not a row
     const std::string dat = "# cells angle\n# a comment 5\n50 23.5\n100 23.4\n\n140 23.3\n";
     BOOST_TEST(*source_value(*parse_source("build/d.dat:angle@last", error), dat, error) == 23.3);
@@ -140,10 +142,11 @@ BOOST_AUTO_TEST_CASE(spans_resolve_against_their_files_and_differences) {
     fs::create_directories(root / "build" / "results");
     std::ofstream(root / "docs" / "generated" / "t.md") << "| q | a | b |\n|---|---|---|\n| x | 23.51 | 23.31 |\n";
     std::ofstream(root / "build" / "results" / "v.log") << "steps: 12503\n";
-    const std::string page = "<!-- value: docs/generated/t.md \"x\" | b - docs/generated/t.md \"x\" | a -->-0.20<!-- /value -->\n"
-                             "<!-- value: build/results/v.log \"steps:\" + docs/generated/t.md \"x\" | a -->12526.51<!-- /value -->\n"
-                             "<!-- value: build/results/w.log \"steps:\" -->1<!-- /value -->\n"
-                             "```output\nflux = -0.125\n```\nso <!-- value: output \"flux = \" -->-0.125<!-- /value -->\n";
+    const std::string page =
+        "<!-- value: docs/generated/t.md \"x\" | b - docs/generated/t.md \"x\" | a -->-0.20<!-- /value -->\n"
+        "<!-- value: build/results/v.log \"steps:\" + docs/generated/t.md \"x\" | a -->12526.51<!-- /value -->\n"
+        "<!-- value: build/results/w.log \"steps:\" -->1<!-- /value -->\n"
+        "```output\nflux = -0.125\n```\nso <!-- value: output \"flux = \" -->-0.125<!-- /value -->\n";
     std::string error;
     const auto spans = resolved_spans(page, root, root / "build", error);
     fs::remove_all(root);
@@ -175,34 +178,39 @@ BOOST_AUTO_TEST_CASE(a_span_shows_its_value_to_its_own_precision) {
 }
 
 BOOST_AUTO_TEST_CASE(refresh_rewrites_spans_at_their_precision) {
-    const std::string page = "index <!-- value: docs/t.md \"i\" -->0.92<!-- /value -->, steps <!-- value: docs/t.md \"s\" -->12,000<!-- /value -->\n";
+    const std::string page =
+        "index <!-- value: docs/t.md \"i\" -->0.92<!-- /value -->, steps <!-- value: docs/t.md \"s\" -->12,000<!-- /value -->\n";
     std::string error;
     std::vector<ResolvedSpan> spans;
     for (const ValueSpan& s : value_spans(page, error)) spans.push_back({s, std::nullopt, ""});
     spans[0].value = 0.93587, spans[1].value = 12503.0;
     int changed = 0;
-    BOOST_TEST(with_values(page, spans, changed) ==
-               "index <!-- value: docs/t.md \"i\" -->0.94<!-- /value -->, steps <!-- value: docs/t.md \"s\" -->12,503<!-- /value -->\n");
+    BOOST_TEST(
+        with_values(page, spans, changed) ==
+        "index <!-- value: docs/t.md \"i\" -->0.94<!-- /value -->, steps <!-- value: docs/t.md \"s\" -->12,503<!-- /value -->\n");
     BOOST_TEST(changed == 2);
 }
 
 BOOST_AUTO_TEST_CASE(numbers_in_prose_are_results_unless_declared_inputs) {
     std::string error;
-    const auto inputs = declared_inputs("text\n```inputs\nSect\\. \\d+(\\.\\d+)?  # section numbers\n"
-                                        "@docs/a.md 0\\.1 rev/s  # the drum's speed\n```\n", error);
+    const auto inputs = declared_inputs(
+        "text\n```inputs\nSect\\. \\d+(\\.\\d+)?  # section numbers\n"
+        "@docs/a.md 0\\.1 rev/s  # the drum's speed\n```\n",
+        error);
     BOOST_TEST(error.empty());
     BOOST_TEST_REQUIRE(inputs.size() == 2u);
     BOOST_TEST(inputs[1].page == "docs/a.md");
     std::vector<long> uses;
-    const std::string page = "In Sect. 4.2 the drum turns at 0.1 rev/s; the index is 0.936 after 132 s, 93 % of 12,503 steps.\n"
-                             "`dt = 0.5` <!-- value: docs/t.md \"i\" -->0.936<!-- /value --> [x](sect4.2.md) 25 cells, Fig. 7\n"
-                             "```\n0.25\n```\n\n    indented 0.5\n<!-- generated: t.md -->\n| 0.7 |\n<!-- end generated -->\n";
+    const std::string page =
+        "In Sect. 4.2 the drum turns at 0.1 rev/s; the index is 0.936 after 132 s, 93 % of 12,503 steps.\n"
+        "`dt = 0.5` <!-- value: docs/t.md \"i\" -->0.936<!-- /value --> [x](sect4.2.md) 25 cells, Fig. 7\n"
+        "```\n0.25\n```\n\n    indented 0.5\n<!-- generated: t.md -->\n| 0.7 |\n<!-- end generated -->\n";
     const auto in_a = hand_typed_numbers(page, "docs/a.md", inputs, uses);
     BOOST_TEST(in_a.size() == 4u);  // 0.936, 132 s, 93 %, 12,503 steps
     BOOST_TEST(uses[0] == 1);
     BOOST_TEST(uses[1] == 1);
     BOOST_TEST(hand_typed_numbers(page, "docs/b.md", inputs, uses).size() == 5u);  // 0.1 is declared for a.md only
-    BOOST_TEST(!declared_inputs("```inputs\n0\\.1 rev/s\n```\n", error).size());  // no reason given
+    BOOST_TEST(!declared_inputs("```inputs\n0\\.1 rev/s\n```\n", error).size());   // no reason given
     BOOST_TEST(!error.empty());
     error.clear();
     BOOST_TEST(!declared_inputs("```inputs\n(unclosed  # why\n```\n", error).size());
@@ -228,8 +236,9 @@ BOOST_AUTO_TEST_CASE(links_must_lead_to_files_of_the_repository) {
     const fs::path root = fs::temp_directory_path() / "granseg_test_links";
     fs::create_directories(root / "docs");
     std::ofstream(root / "docs" / "b.md") << "# B page\n\n## 2. The part\n";
-    const std::string page = "[b](b.md) [part](b.md#2-the-part) [web](https://example.org)\n"
-                             "![f](../build/figures/x.png) [gone](c.md) [bad anchor](b.md#nothing)\n";
+    const std::string page =
+        "[b](b.md) [part](b.md#2-the-part) [web](https://example.org)\n"
+        "![f](../build/figures/x.png) [gone](c.md) [bad anchor](b.md#nothing)\n";
     const auto found = broken_links(page, root / "docs", root);
     fs::remove_all(root);
     BOOST_TEST_REQUIRE(found.size() == 3u);

@@ -22,7 +22,7 @@ BOOST_AUTO_TEST_CASE(regular_polygons_against_closed_forms) {
     BOOST_TEST(triangle.area() == 0.75 * std::sqrt(3.0) * R * R, tt::tolerance(1e-14));
     BOOST_TEST(square.inradius() == R / std::sqrt(2.0), tt::tolerance(1e-14));
     BOOST_TEST(triangle.lowest() == -R / 2, tt::tolerance(1e-14));  // a side at the bottom
-    BOOST_TEST(triangle.highest() == R, tt::tolerance(1e-14));       // the opposite corner on top
+    BOOST_TEST(triangle.highest() == R, tt::tolerance(1e-14));      // the opposite corner on top
     BOOST_TEST(triangle.half_width() == R * std::sqrt(3.0) / 2, tt::tolerance(1e-14));
     // The gauge: R on the wall, linear along a ray.
     BOOST_TEST(square.gauge(square.inradius(), 0.0) == R, tt::tolerance(1e-14));
@@ -82,7 +82,8 @@ BOOST_AUTO_TEST_CASE(drum_spec_surface_and_closest_distance) {
     BOOST_TEST(std::fabs(closest_surface_distance(d)) <= 1e-15);  // centrally symmetric: through the axis at every angle
     d.fill_height = 0.75 * std::sqrt(2.0) * 0.05;  // three quarters of the side: the surface is closest turned by 45 degrees
     const double a = 0.05 / std::sqrt(2.0), area = 2 * a * 1.5 * a;
-    BOOST_TEST(closest_surface_distance(d) == DrumShape::polygon(4, 0.05, 0.0).surface_offset(area, M_PI / 4), tt::tolerance(1e-12));
+    BOOST_TEST(closest_surface_distance(d) == DrumShape::polygon(4, 0.05, 0.0).surface_offset(area, M_PI / 4),
+               tt::tolerance(1e-12));
     BOOST_TEST(closest_surface_distance(d) < d.surface_height());
 }
 

@@ -90,7 +90,8 @@ double tridiagonal_lines_error(Grid g, int axis, unsigned seed) {
     std::uniform_real_distribution<double> W(0.0, 5.0), R(-1.0, 1.0);
     const std::size_t cells = g.cells();
     std::vector<double> lower(cells), diag(cells), upper(cells), x(cells);
-    for (std::size_t c = 0; c < cells; ++c) lower[c] = W(rng), upper[c] = W(rng), diag[c] = 1.0 + lower[c] + upper[c] + W(rng), x[c] = R(rng);
+    for (std::size_t c = 0; c < cells; ++c)
+        lower[c] = W(rng), upper[c] = W(rng), diag[c] = 1.0 + lower[c] + upper[c] + W(rng), x[c] = R(rng);
     const std::vector<double> rhs = x;
     TridiagonalLines solver;
     solver.factor(g, axis, lower, diag, upper);
@@ -106,10 +107,14 @@ double tridiagonal_lines_error(Grid g, int axis, unsigned seed) {
         for (int m = 0; m < n; ++m) {
             const std::size_t c = c0 + m * stride;
             A(m, m) += diag[c];
-            if (m > 0) A(m, m - 1) -= lower[c];
-            else if (g.periodic[axis]) A(m, n - 1) -= lower[c];
-            if (m < n - 1) A(m, m + 1) -= upper[c];
-            else if (g.periodic[axis]) A(m, 0) -= upper[c];
+            if (m > 0)
+                A(m, m - 1) -= lower[c];
+            else if (g.periodic[axis])
+                A(m, n - 1) -= lower[c];
+            if (m < n - 1)
+                A(m, m + 1) -= upper[c];
+            else if (g.periodic[axis])
+                A(m, 0) -= upper[c];
             b(m) = rhs[c], y(m) = x[c];
         }
         worst = std::max(worst, (A.partialPivLu().solve(b) - y).cwiseAbs().maxCoeff());
@@ -164,8 +169,9 @@ BOOST_AUTO_TEST_CASE(a_step_takes_gravity_at_its_middle) {
         f.omega = omega, f.tilt = tilt, f.x_c = 0.01, f.z_c = 0.01;
         FlowSolver solver(g, m, s, f);
         const std::vector<double> zero(g.cells(), 0.0), T(g.cells(), s.T_floor);
-        solver.set_state(lithostatic_bed(g, m, 0.02, f.gravity, s.T_floor, m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat)),
-                         {zero, zero, zero}, T);
+        solver.set_state(
+            lithostatic_bed(g, m, 0.02, f.gravity, s.T_floor, m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat)),
+            {zero, zero, zero}, T);
         BOOST_TEST(solver.step() == dt);
         double sum = 0.0;
         for (std::size_t c = 0; c < g.cells(); ++c) sum += solver.u(0)[c];
@@ -208,8 +214,9 @@ BOOST_AUTO_TEST_CASE(surface_angle_rises_in_the_direction_of_rotation) {
     BOOST_TEST(std::fabs(tilted_surface_angle(0.5, 1.0) - 0.5 * 180 / M_PI) < 1.0);
     BOOST_TEST(std::fabs(tilted_surface_angle(0.5, -1.0) + 0.5 * 180 / M_PI) < 1.0);
     // No surface within the fitting radius: no angle.
-    BOOST_TEST(std::isnan(drum_state(FlowSolver(drum_grid(16, 0.05), Material::glass_substitute(), FlowSettings{}, Frame{}),
-                                     0.3, 0.04, 0.0).surface_angle_deg));
+    BOOST_TEST(std::isnan(
+        drum_state(FlowSolver(drum_grid(16, 0.05), Material::glass_substitute(), FlowSettings{}, Frame{}), 0.3, 0.04, 0.0)
+            .surface_angle_deg));
 }
 
 /// The message of the InputError that preparing `toml` throws ("" if none).
@@ -227,17 +234,19 @@ std::string scene_error(const std::string& toml) {
 }
 
 BOOST_AUTO_TEST_CASE(flow_scenes_reject_bad_values_with_one_line) {
-    const std::string above_rcp = scene_error(
-        "[scene]\nkind = \"bed-at-rest\"\n[grid]\nnz = 10\nheight = 0.01\n[bed]\nPhi = 0.7\n[run]\nt_end = 1\n");
+    const std::string above_rcp =
+        scene_error("[scene]\nkind = \"bed-at-rest\"\n[grid]\nnz = 10\nheight = 0.01\n[bed]\nPhi = 0.7\n[run]\nt_end = 1\n");
     BOOST_TEST(above_rcp.find("[bed] Phi") != std::string::npos);
     BOOST_TEST(above_rcp.find('\n') == std::string::npos);
     const std::string angle = scene_error("[scene]\nkind = \"tumbler-flow\"\n[run]\nt_end = 5\nangle_from = 6\n");
     BOOST_TEST(angle.find("[run] angle_from") != std::string::npos);
     const std::string typo = scene_error(
-        "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 10\nheight = 0.01\n[shear]\nU = 1\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\ncfl_number = 0.5\n");
+        "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 10\nheight = 0.01\n[shear]\nU = 1\nPhi = 0.6\n[run]\nt_end = "
+        "1\n[flow]\ncfl_number = 0.5\n");
     BOOST_TEST(typo.find("cfl_number") != std::string::npos);
     const std::string floor = scene_error(
-        "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 10\nheight = 0.01\n[plane]\nangle_deg = 20\nPhi = 0.6\n[run]\nt_end = 1\n[flow]\nT_floor = 0\n");
+        "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 10\nheight = 0.01\n[plane]\nangle_deg = 20\nPhi = 0.6\n[run]\nt_end = "
+        "1\n[flow]\nT_floor = 0\n");
     BOOST_TEST(floor.find("[flow] T_floor") != std::string::npos);
 }
 
@@ -280,8 +289,8 @@ BOOST_AUTO_TEST_CASE(dust_moves_its_own_material_but_opens_a_gap_without_flow) {
 
 BOOST_AUTO_TEST_CASE(volume_at_pressure_inverts_the_equation_of_state) {
     // Phi(p(Phi)) = Phi for both compressibility laws, on both branches and near Phi_rcp, from
-    // either start of the iteration; the slope is 1/c^2; Phi(p) is concave (slopes decrease) and continued by its tangent below 0.
-    // The power law with beta = 1 (closed form), Lun-Savage and beta = 3 (iterated).
+    // either start of the iteration; the slope is 1/c^2; Phi(p) is concave (slopes decrease) and continued by its tangent below
+    // 0. The power law with beta = 1 (closed form), Lun-Savage and beta = 3 (iterated).
     for (const auto& [law, beta] : {std::pair{CompressibilityLaw::power, 1.0}, std::pair{CompressibilityLaw::lun_savage, 1.0},
                                     std::pair{CompressibilityLaw::power, 3.0}}) {
         Material m = Material::glass_substitute();

@@ -124,9 +124,8 @@ BOOST_AUTO_TEST_CASE(transport_update_is_the_coupling_identity_and_conserves_mas
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const AxisWeights inv_h = axis_weights(mesh);
     std::vector<double> expected(cells);
-    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* rows) {
-        expected[c] = start.Phi[c] - dt * face_balance(M, inv_h, i, rows);
-    });
+    mesh.parallel_for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* rows) { expected[c] = start.Phi[c] - dt * face_balance(M, inv_h, i, rows); });
     double total_before = 0.0, total_after = 0.0;
     for (std::size_t c = 0; c < cells; ++c) {
         BOOST_TEST(state.Phi[c] == expected[c]);

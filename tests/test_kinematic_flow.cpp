@@ -16,7 +16,7 @@ BOOST_AUTO_TEST_SUITE(kinematic_flow_suite)
 BOOST_AUTO_TEST_CASE(geometry_of_the_sect_4_2_drum) {
     const RollingDrumFlow f{RollingDrumParameters{}};
     BOOST_TEST(f.radius() == 0.05);
-    BOOST_TEST(f.surface_distance() == 0.025, tt::tolerance(1e-15));           // 75 % of the height
+    BOOST_TEST(f.surface_distance() == 0.025, tt::tolerance(1e-15));  // 75 % of the height
     BOOST_TEST(f.half_chord() == std::sqrt(0.05 * 0.05 - 0.025 * 0.025), tt::tolerance(1e-15));
     BOOST_TEST(f.Omega() == 0.2 * M_PI, tt::tolerance(1e-15));
     BOOST_TEST(f.tangent().dot(f.normal()) == 0.0, tt::tolerance(1e-15));

@@ -28,7 +28,8 @@ double tiled_disc_area(int n, double L, Point2 centre, double R) {
 
 Polygon regular(int sides, double R, double start) {
     Polygon p;
-    for (int v = 0; v < sides; ++v) p.push_back({R * std::cos(start + 2 * M_PI * v / sides), R * std::sin(start + 2 * M_PI * v / sides)});
+    for (int v = 0; v < sides; ++v)
+        p.push_back({R * std::cos(start + 2 * M_PI * v / sides), R * std::sin(start + 2 * M_PI * v / sides)});
     return p;
 }
 
@@ -75,7 +76,8 @@ BOOST_AUTO_TEST_CASE(cells_in_regular_polygons_sum_to_their_areas) {
         const double h = 2.0 / n;
         double sum = 0.0;
         for (int k = 0; k < n; ++k)
-            for (int i = 0; i < n; ++i) sum += rectangle_area_in_convex(-1 + i * h, -1 + k * h, -1 + (i + 1) * h, -1 + (k + 1) * h, p);
+            for (int i = 0; i < n; ++i)
+                sum += rectangle_area_in_convex(-1 + i * h, -1 + k * h, -1 + (i + 1) * h, -1 + (k + 1) * h, p);
         BOOST_TEST(sum == exact, tt::tolerance(1e-13));
     }
     // The line x + z = 2 cuts a unit triangle from the square [0.5, 1.5]^2.
@@ -86,7 +88,7 @@ BOOST_AUTO_TEST_CASE(polygons_clipped_by_half_planes_and_discs) {
     const Polygon square = rectangle(0, 0, 1, 1);
     BOOST_TEST(polygon_area(square) == 1.0);
     BOOST_TEST(polygon_area(clip_half_plane(square, {1, 1}, 1.0)) == 0.5, tt::tolerance(1e-15));  // x + z <= 1
-    BOOST_TEST(clip_half_plane(square, {0, 1}, -0.1).empty());                                   // z <= -0.1
+    BOOST_TEST(clip_half_plane(square, {0, 1}, -0.1).empty());                                    // z <= -0.1
     // A triangle inside a large disc keeps its area; a polygon around a disc holds all of it.
     const Polygon triangle{{0.1, 0.1}, {0.4, 0.1}, {0.1, 0.5}};
     BOOST_TEST(area_in_disc(triangle, {0, 0}, 10.0) == polygon_area(triangle), tt::tolerance(1e-14));

@@ -33,7 +33,8 @@ struct Cells {
 
     Cells(const std::vector<double>& Phi, double T)
         : mesh(Grid::plane_xz(1, static_cast<int>(Phi.size()), 0.0, 0.0, 0.01, 0.01 * static_cast<double>(Phi.size()))),
-          rcp(m.packing.Phi_rcp(0.5)), co(m.packing.Phi_co(0.5)) {
+          rcp(m.packing.Phi_rcp(0.5)),
+          co(m.packing.Phi_co(0.5)) {
         const std::size_t n = Phi.size();
         state.Phi = Phi, state.T.assign(n, T);
         cl.Phi_rcp.assign(n, rcp), cl.Phi_co.assign(n, co);

@@ -51,10 +51,8 @@ BOOST_AUTO_TEST_CASE(classifier_picks_every_region_of_fig4) {
     // Q_L = (0.15, 0.5) left of Gamma (Fig. 4a) and (0.4, 0.5) right of it (Fig. 4b).
     const double left[6][2] = {{0.1, 0.4}, {0.2, 0.48}, {0.4, 0.8}, {0.5, 0.6}, {0.3, 0.45}, {0.25, 0.3}};
     const double right[4][2] = {{0.05, 0.3}, {0.35, 0.7}, {0.35, 0.4}, {0.2, 0.25}};
-    for (int k = 0; k < 6; ++k)
-        BOOST_TEST(classify_table1({0.15, 0.5, 1.0}, {left[k][0], left[k][1], 1.0}).number == k + 1);
-    for (int k = 0; k < 4; ++k)
-        BOOST_TEST(classify_table1({0.4, 0.5, 1.0}, {right[k][0], right[k][1], 1.0}).number == k + 7);
+    for (int k = 0; k < 6; ++k) BOOST_TEST(classify_table1({0.15, 0.5, 1.0}, {left[k][0], left[k][1], 1.0}).number == k + 1);
+    for (int k = 0; k < 4; ++k) BOOST_TEST(classify_table1({0.4, 0.5, 1.0}, {right[k][0], right[k][1], 1.0}).number == k + 7);
 }
 
 BOOST_AUTO_TEST_CASE(negative_coefficients_are_the_mirror_image) {

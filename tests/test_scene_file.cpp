@@ -44,9 +44,10 @@ bool is_one_line_in_format(const std::string& message) {
 BOOST_AUTO_TEST_SUITE(scene_file)
 
 BOOST_AUTO_TEST_CASE(valid_file_reads_and_finishes) {
-    const SceneFile s = SceneFile::parse("[grid]\ncells = 200\nlength = 1\n[segregation]\nscheme = \"a\"\n"
-                                         "S = 2.5\nlist = [1, 2.5]\nPhi = \"0.6 - 0.1*z\"\non = true\n",
-                                         "t.toml");
+    const SceneFile s = SceneFile::parse(
+        "[grid]\ncells = 200\nlength = 1\n[segregation]\nscheme = \"a\"\n"
+        "S = 2.5\nlist = [1, 2.5]\nPhi = \"0.6 - 0.1*z\"\non = true\n",
+        "t.toml");
     BOOST_TEST(s.integer("grid", "cells", 1, 1000) == 200);
     BOOST_TEST(s.number("grid", "length", Range::above(0)) == 1.0);  // integers are numbers
     BOOST_TEST(s.choice("segregation", "scheme", {"a", "b"}) == "a");
@@ -110,21 +111,18 @@ BOOST_AUTO_TEST_CASE(unknown_choice) {
 }
 
 BOOST_AUTO_TEST_CASE(malformed_expression) {
-    const std::string m = error_of([] {
-        SceneFile::parse("[initial]\nPhi = \"0.6 - *z\"\n", "t.toml").expression("initial", "Phi", {"z"});
-    });
+    const std::string m =
+        error_of([] { SceneFile::parse("[initial]\nPhi = \"0.6 - *z\"\n", "t.toml").expression("initial", "Phi", {"z"}); });
     BOOST_TEST(is_one_line_in_format(m), m);
     BOOST_TEST(m.find("malformed expression") != std::string::npos);
-    const std::string v = error_of([] {
-        SceneFile::parse("[initial]\nPhi = \"0.6 - y\"\n", "t.toml").expression("initial", "Phi", {"z"});
-    });
+    const std::string v =
+        error_of([] { SceneFile::parse("[initial]\nPhi = \"0.6 - y\"\n", "t.toml").expression("initial", "Phi", {"z"}); });
     BOOST_TEST(v.find("unknown variable \"y\"") != std::string::npos, v);
 }
 
 BOOST_AUTO_TEST_CASE(bad_array_element) {
-    const std::string m = error_of([] {
-        SceneFile::parse("[s]\nx = [0.1, \"a\"]\n", "t.toml").numbers("s", "x", Range::closed(0, 1));
-    });
+    const std::string m =
+        error_of([] { SceneFile::parse("[s]\nx = [0.1, \"a\"]\n", "t.toml").numbers("s", "x", Range::closed(0, 1)); });
     BOOST_TEST(is_one_line_in_format(m), m);
     BOOST_TEST(m.find("element 2") != std::string::npos);
 }

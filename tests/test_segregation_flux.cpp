@@ -31,9 +31,9 @@ BOOST_AUTO_TEST_CASE(constant_Phi_reduces_to_classic_godunov) {
     for (double a : {-1.0, 1.0})
         for (double l = 0.0; l <= 0.6; l += 0.05)
             for (double r = 0.0; r <= 0.6; r += 0.05)
-                BOOST_TEST(modified_godunov_flux({{l, 0.6, a}, {r, 0.6, a}}) ==
-                               classic_godunov_flux({{l, 0.6, a}, {r, 0.6, a}, 0.6, a}),
-                           tt::tolerance(1e-14));
+                BOOST_TEST(
+                    modified_godunov_flux({{l, 0.6, a}, {r, 0.6, a}}) == classic_godunov_flux({{l, 0.6, a}, {r, 0.6, a}, 0.6, a}),
+                    tt::tolerance(1e-14));
 }
 
 BOOST_AUTO_TEST_CASE(full_and_empty_cells_stay_in_bounds) {

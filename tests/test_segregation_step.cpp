@@ -93,8 +93,7 @@ BOOST_AUTO_TEST_CASE(time_step_follows_the_documented_formula) {
     const double h = 0.1;
     SegregationOptions o;
     o.cfl = 0.5;
-    BOOST_TEST(SegregationSolver(c.grid, o).time_step(c.fields) == 0.5 / (4.0 / h + 2 * 0.01 / (h * h)),
-               tt::tolerance(1e-14));
+    BOOST_TEST(SegregationSolver(c.grid, o).time_step(c.fields) == 0.5 / (4.0 / h + 2 * 0.01 / (h * h)), tt::tolerance(1e-14));
     o.scheme = SegregationScheme::modified_godunov_2;
     BOOST_TEST(SegregationSolver(c.grid, o).time_step(c.fields) == 0.5 * 2.0 / (2 * 4.0 / h + 2 * 0.01 / (h * h)),
                tt::tolerance(1e-14));

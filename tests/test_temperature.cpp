@@ -14,7 +14,7 @@ BOOST_AUTO_TEST_SUITE(temperature)
 
 namespace {
 
-constexpr int kCells = 16;                          // along z; 2 periodic cells along x
+constexpr int kCells = 16;  // along z; 2 periodic cells along x
 constexpr double kPhi = 0.5, kEta = 2e-3, kLambda = 5.0, kEpsPhi = 4e3, kShear = 1.0;
 
 /// 2 periodic cells along x, `cells` along z, over a height of 1.
@@ -110,8 +110,8 @@ BOOST_AUTO_TEST_CASE(a_warm_started_solve_equals_a_fresh_one_in_fewer_iterations
         Column fresh = col;
         const std::vector<double> before = col.state.T;
         const int warm_iterations = warm.apply(col.mesh, settings, col.walls, dt, col.closures, col.heat, col.state);
-        const int fresh_iterations = TemperatureSolver(fresh.mesh).apply(fresh.mesh, settings, fresh.walls, dt,
-                                                                         fresh.closures, fresh.heat, fresh.state);
+        const int fresh_iterations =
+            TemperatureSolver(fresh.mesh).apply(fresh.mesh, settings, fresh.walls, dt, fresh.closures, fresh.heat, fresh.state);
         double change = 0.0, difference = 0.0;
         for (std::size_t c = 0; c < col.grid.cells(); ++c) {
             change = std::max(change, std::fabs(col.state.T[c] - before[c]));

@@ -23,7 +23,8 @@ namespace {
 /// The smallest drum (cells per diameter) whose grid runs on threads.
 int smallest_threaded_drum() {
     DrumSpec drum;
-    for (drum.cells_per_diameter = 8; !threads_pay(drum.grid().cells()); ++drum.cells_per_diameter) {}
+    for (drum.cells_per_diameter = 8; !threads_pay(drum.grid().cells()); ++drum.cells_per_diameter) {
+    }
     return drum.cells_per_diameter;
 }
 
@@ -95,17 +96,23 @@ BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_
     // not even a one-thread team), and a reduction (largest value, count) over the indices.
     auto run = [](bool parallel) {
         std::vector<int> thread(1000, -1), level(1000, -1);
-        parallel_for(parallel, thread.size(), [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
+        parallel_for(parallel, thread.size(),
+                     [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
         struct Fold {
             double largest = 0.0;
             long count = 0;
         };
-        const Fold f = parallel_fold(parallel, 1000L, Fold{}, [](Fold& acc, long i) {
-            acc.largest = std::max(acc.largest, static_cast<double>((i * 7919) % 1000));
-            acc.count += i % 3 == 0;
-        }, [](const Fold& x, const Fold& y) { return Fold{std::max(x.largest, y.largest), x.count + y.count}; });
-        return std::make_tuple(*std::max_element(thread.begin(), thread.end()), *std::max_element(level.begin(), level.end()), f.largest,
-                               f.count);
+        const Fold f = parallel_fold(
+            parallel, 1000L, Fold{},
+            [](Fold& acc, long i) {
+                acc.largest = std::max(acc.largest, static_cast<double>((i * 7919) % 1000));
+                acc.count += i % 3 == 0;
+            },
+            [](const Fold& x, const Fold& y) {
+                return Fold{std::max(x.largest, y.largest), x.count + y.count};
+            });
+        return std::make_tuple(*std::max_element(thread.begin(), thread.end()), *std::max_element(level.begin(), level.end()),
+                               f.largest, f.count);
     };
     omp_set_num_threads(2);
     const auto [threads_on, level_on, largest_on, count_on] = run(true);
@@ -162,8 +169,8 @@ BOOST_AUTO_TEST_CASE(lanes_run_once_each_on_threads_that_open_no_more) {
     });
     omp_set_num_threads(before);
     BOOST_TEST((runs[0] == 1 && runs[1] == 1));
-    BOOST_TEST(threads[0] != threads[1]);         // side by side
-    BOOST_TEST((team[0] == 1 && team[1] == 1));   // a region inside a lane gets one thread
+    BOOST_TEST(threads[0] != threads[1]);        // side by side
+    BOOST_TEST((team[0] == 1 && team[1] == 1));  // a region inside a lane gets one thread
 }
 
 BOOST_AUTO_TEST_SUITE_END()

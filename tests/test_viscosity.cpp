@@ -87,8 +87,7 @@ BOOST_AUTO_TEST_CASE(coupled_step_moves_with_the_lid_and_keeps_empty_cells_at_re
     FlowState s = duct_state(g);
     solve.apply(mesh, FlowSettings{}, walls, kDt, eta, s);
     for (int k = 0; k < 8; ++k)
-        for (int i = 0; i < 4; ++i)
-            BOOST_TEST(s.u[0][g.index(i, 0, k)] == g.center(2, k), boost::test_tools::tolerance(1e-6));
+        for (int i = 0; i < 4; ++i) BOOST_TEST(s.u[0][g.index(i, 0, k)] == g.center(2, k), boost::test_tools::tolerance(1e-6));
     const std::size_t hole = g.index(1, 0, 3);
     s.Phi[hole] = 0.0, s.u[0][hole] = 1.0, eta[hole] = 0.0;
     solve.apply(mesh, FlowSettings{}, walls, kDt, eta, s);

@@ -108,7 +108,7 @@ ChuteResult run_chute(int N) {
     for (std::size_t c = 0; c < Phi.size(); ++c) r.divergence = std::max(r.divergence, std::fabs(Phi_check[c] - kPhi));
     for (long n = 0; n < steps; ++n) {
         transport_bulk(grid, Phi, M, inflow, dt, phi);  // bulk first (Lie splitting) ...
-        segregation.step(fields, dt, phi);               // ... then segregation with Phi frozen (eq. 52b)
+        segregation.step(fields, dt, phi);              // ... then segregation with Phi frozen (eq. 52b)
         r.bound = std::max(r.bound, bound_violation(phi, Phi));
     }
     // Small particles in through x = 0 and out through x = L (mass flux times donor phi_hat).
@@ -152,8 +152,10 @@ int main(int argc, char** argv) {
         for (int i = 0; i < N; ++i) {
             for (int k = 0; k < N; ++k) {
                 const double x0 = i * kLength / N, z0 = k * 1.0 / N;
-                table.row({{"x", grid.center(0, i)}, {"z", grid.center(2, k)}, {"phi", r.phi[grid.index(i, 0, k)]},
-                            {"exact", kPhi * exact_cell_average(x0, x0 + kLength / N, z0, z0 + 1.0 / N)}});
+                table.row({{"x", grid.center(0, i)},
+                           {"z", grid.center(2, k)},
+                           {"phi", r.phi[grid.index(i, 0, k)]},
+                           {"exact", kPhi * exact_cell_average(x0, x0 + kLength / N, z0, z0 + 1.0 / N)}});
             }
             table.blank();
         }

@@ -30,9 +30,9 @@
 namespace fs = std::filesystem;
 using granseg::verify::CheckTable;
 using granseg::verify::Cli;
-using granseg::verify::Outcome;
 using granseg::verify::files_below;
 using granseg::verify::line_count;
+using granseg::verify::Outcome;
 using namespace granseg;
 
 namespace {
@@ -95,100 +95,103 @@ std::vector<Case> cli_cases(const fs::path& out) {
     const std::string shear = "--grad '0 0 2.385 0 0 0 0 0 0'";
     const std::string closures = "closures --Phi 0.59 --phi-hat 0.4 --T 1e-4";
     return {
-        bad_scene("tumbler-kinematic, fill_fraction = 1.2", "[drum] fill_fraction:",
-                  tumbler + "[drum]\nfill_fraction = 1.2\n[time]\nend = 1\n"),
-        bad_scene("tumbler-kinematic, negative end time", "[time] end:",
-                  tumbler + "[time]\nend = -1\n"),
-        bad_scene("tumbler-kinematic, unknown key", "[drum] rotation_speed:",
-                  tumbler + "[time]\nend = 1\n[drum]\nrotation_speed = 0.1\n"),
-        bad_scene("tumbler-kinematic, layer thicker than the bed allows", "[drum] layer_thickness:",
-                  tumbler + "[time]\nend = 1\n[drum]\nlayer_thickness = 0.05\n"),
-        bad_scene("tumbler-kinematic, layer thinner than a cell", "[drum] cells_per_diameter:",
-                  tumbler + "[time]\nend = 1\n[drum]\ncells_per_diameter = 10\n"),
-        bad_scene("tumbler-kinematic, phi_hat > 1 on part of the bed", "[initial] phi_hat:",
-                  tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
-        bad_scene("tumbler-kinematic, classic scheme", "[segregation] scheme:",
-                  tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"),
-        bad_scene("tumbler-kinematic, Rusanov scheme (unbounded row)", "[segregation] scheme:",
-                  tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"rusanov\"\n"),
-        bad_scene("tumbler-kinematic, rotation_rate = 0", "[drum] rotation_rate:",
-                  tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"),
-        bad_scene("tumbler-kinematic, unknown bulk scheme", "[bulk] scheme:",
-                  tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"),
-        bad_scene("tumbler, phi_hat > 1 on part of the bed", "[initial] phi_hat:",
-                  coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
-        bad_scene("tumbler, phi_hat < 0 at the bottom", "[initial] phi_hat:",
-                  coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"),
-        bad_scene("tumbler, a tracer share above 1 in the core", "[initial] tracer:",
-                  coupled + "[initial]\ntracer = \"sqrt(x^2 + z^2) < 0.01 ? 2 : 0\"\n"),
+        bad_scene("tumbler-kinematic, fill_fraction = 1.2",
+                  "[drum] fill_fraction:", tumbler + "[drum]\nfill_fraction = 1.2\n[time]\nend = 1\n"),
+        bad_scene("tumbler-kinematic, negative end time", "[time] end:", tumbler + "[time]\nend = -1\n"),
+        bad_scene("tumbler-kinematic, unknown key",
+                  "[drum] rotation_speed:", tumbler + "[time]\nend = 1\n[drum]\nrotation_speed = 0.1\n"),
+        bad_scene("tumbler-kinematic, layer thicker than the bed allows",
+                  "[drum] layer_thickness:", tumbler + "[time]\nend = 1\n[drum]\nlayer_thickness = 0.05\n"),
+        bad_scene("tumbler-kinematic, layer thinner than a cell",
+                  "[drum] cells_per_diameter:", tumbler + "[time]\nend = 1\n[drum]\ncells_per_diameter = 10\n"),
+        bad_scene("tumbler-kinematic, phi_hat > 1 on part of the bed",
+                  "[initial] phi_hat:", tumbler + "[time]\nend = 1\n[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
+        bad_scene("tumbler-kinematic, classic scheme",
+                  "[segregation] scheme:", tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"classic-upwind\"\n"),
+        bad_scene("tumbler-kinematic, Rusanov scheme (unbounded row)",
+                  "[segregation] scheme:", tumbler + "[time]\nend = 1\n[segregation]\nscheme = \"rusanov\"\n"),
+        bad_scene("tumbler-kinematic, rotation_rate = 0",
+                  "[drum] rotation_rate:", tumbler + "[time]\nend = 1\n[drum]\nrotation_rate = 0\n"),
+        bad_scene("tumbler-kinematic, unknown bulk scheme",
+                  "[bulk] scheme:", tumbler + "[time]\nend = 1\n[bulk]\nscheme = \"upwind\"\n"),
+        bad_scene("tumbler, phi_hat > 1 on part of the bed",
+                  "[initial] phi_hat:", coupled + "[initial]\nphi_hat = \"x > 0.02 ? 1.5 : 0.5\"\n"),
+        bad_scene("tumbler, phi_hat < 0 at the bottom",
+                  "[initial] phi_hat:", coupled + "[initial]\nphi_hat = \"z < -0.04 ? -0.1 : 0.5\"\n"),
+        bad_scene("tumbler, a tracer share above 1 in the core",
+                  "[initial] tracer:", coupled + "[initial]\ntracer = \"sqrt(x^2 + z^2) < 0.01 ? 2 : 0\"\n"),
         bad_scene("tumbler, S < 0", "[segregation] S:", coupled + "[segregation]\nS = -1\n"),
         bad_scene("tumbler, unknown key", "[coupling] feedback:", coupled + "[coupling]\nfeedback = true\n"),
-        bad_scene("tumbler, a fixed mixture with packing feedback", "[coupling] mixture:",
-                  coupled + "[coupling]\nmixture = 0.5\n"),
-        bad_scene("tumbler, mixture > 1", "[coupling] mixture:",
-                  coupled + "[coupling]\npacking_feedback = false\nmixture = 1.5\n"),
-        bad_scene("tumbler, [flow] phi_hat (the mixture comes from [initial])", "[flow] phi_hat:",
-                  coupled + "[flow]\nphi_hat = 0.5\n"),
+        bad_scene("tumbler, a fixed mixture with packing feedback",
+                  "[coupling] mixture:", coupled + "[coupling]\nmixture = 0.5\n"),
+        bad_scene("tumbler, mixture > 1",
+                  "[coupling] mixture:", coupled + "[coupling]\npacking_feedback = false\nmixture = 1.5\n"),
+        bad_scene("tumbler, [flow] phi_hat (the mixture comes from [initial])",
+                  "[flow] phi_hat:", coupled + "[flow]\nphi_hat = 0.5\n"),
         bad_scene("tumbler, unknown viscosity solve", "[flow] viscosity:", coupled + "[flow]\nviscosity = \"diagonal\"\n"),
         bad_scene("tumbler, unknown transport", "[flow] transport:", coupled + "[flow]\ntransport = \"weno\"\n"),
-        bad_scene("tumbler, muscl transport with the explicit step", "[flow] transport:",
-                  coupled + "[flow]\ntime_stepping = \"explicit\"\ntransport = \"muscl\"\n"),
+        bad_scene("tumbler, muscl transport with the explicit step",
+                  "[flow] transport:", coupled + "[flow]\ntime_stepping = \"explicit\"\ntransport = \"muscl\"\n"),
         bad_scene("tumbler, unknown limiter", "[flow] limiter:", coupled + "[flow]\nlimiter = \"superbee\"\n"),
-        bad_scene("tumbler, cells too coarse for the flowing layer", "[drum] cells_per_diameter:",
-                  coupled + "[drum]\ncells_per_diameter = 16\n"),
+        bad_scene("tumbler, cells too coarse for the flowing layer",
+                  "[drum] cells_per_diameter:", coupled + "[drum]\ncells_per_diameter = 16\n"),
         bad_scene("tumbler, unknown drum shape", "[drum] shape:", coupled + "[drum]\nshape = \"ellipse\"\n"),
         bad_scene("tumbler, a polygon of 2 sides", "[drum] sides:", coupled + "[drum]\nshape = \"polygon\"\nsides = 2\n"),
         bad_scene("tumbler, sides for a circle", "[drum] sides:", coupled + "[drum]\nsides = 4\n"),
         bad_scene("tumbler-flow, triangle with too few cells across its inscribed circle", "[drum] cells_per_diameter:",
-                  "[scene]\nkind = \"tumbler-flow\"\n" + dir + "[run]\nt_end = 1\nangle_from = 0\n[drum]\nshape = \"polygon\"\nsides = 3\ncells_per_diameter = 12\n"),
-        bad_scene("tumbler, square filled to its top", "[drum] fill_height:",
-                  coupled + "[drum]\nshape = \"polygon\"\nsides = 4\nfill_height = 0.0707\n"),
-        bad_scene("tumbler, a bed less than two cells deep", "[drum] fill_height:", coupled + "[drum]\ncells_per_diameter = 26\nfill_height = 0.005\n"),
+                  "[scene]\nkind = \"tumbler-flow\"\n" + dir +
+                      "[run]\nt_end = 1\nangle_from = 0\n[drum]\nshape = \"polygon\"\nsides = 3\ncells_per_diameter = 12\n"),
+        bad_scene("tumbler, square filled to its top",
+                  "[drum] fill_height:", coupled + "[drum]\nshape = \"polygon\"\nsides = 4\nfill_height = 0.0707\n"),
+        bad_scene("tumbler, a bed less than two cells deep",
+                  "[drum] fill_height:", coupled + "[drum]\ncells_per_diameter = 26\nfill_height = 0.005\n"),
         bad_scene("tumbler, classic scheme", "[segregation] scheme:", coupled + "[segregation]\nscheme = \"classic-godunov\"\n"),
         bad_scene("tumbler, Phi_min = 1", "[segregation] Phi_min:", coupled + "[segregation]\nPhi_min = 1\n"),
-        bad_scene("tumbler, a negative shear-rate threshold", "[segregation] diagnostic_min_shear_rate:",
-                  coupled + "[segregation]\ndiagnostic_min_shear_rate = -1\n"),
+        bad_scene("tumbler, a negative shear-rate threshold",
+                  "[segregation] diagnostic_min_shear_rate:", coupled + "[segregation]\ndiagnostic_min_shear_rate = -1\n"),
         bad_scene("tumbler, no gravity (no bed to start from)", "[drum] gravity:", coupled + "[drum]\ngravity = 0\n"),
         bad_scene("tumbler, T0 = 0 (no yield pressure holds the bed)", "[material] T0:", coupled + "[material]\nT0 = 0\n"),
         bad_scene("bed-at-rest, T0 = 0 under gravity", "[material] T0:",
-                  "[scene]\nkind = \"bed-at-rest\"\n" + dir + "[grid]\nnz = 8\nheight = 0.02\n[bed]\nPhi = 0.6\n[run]\nt_end = 0.1\n[material]\nT0 = 0\n"),
-        bad_scene("segregation1d, phi = Phi + 0.01", "[initial] phi:",
-                  column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"),
-        bad_scene("segregation1d, cfl = 1.5", "[time] cfl:",
-                  column + "cfl = 1.5\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"),
-        bad_scene("segregation1d, T < 0 on part of the grid", "[initial] T:",
-                  column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"),
-        bad_scene("segregation1d, Phi >= 1 on part of the grid", "[initial] Phi:",
-                  column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"),
-        bad_scene("segregation1d, classic scheme, T < 0 at a face only", "[initial] T:",
-                  column + "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"),
+                  "[scene]\nkind = \"bed-at-rest\"\n" + dir +
+                      "[grid]\nnz = 8\nheight = 0.02\n[bed]\nPhi = 0.6\n[run]\nt_end = 0.1\n[material]\nT0 = 0\n"),
+        bad_scene("segregation1d, phi = Phi + 0.01",
+                  "[initial] phi:", column + "[initial]\n" + profiles + "phi = \"Phi + 0.01\"\n"),
+        bad_scene("segregation1d, cfl = 1.5", "[time] cfl:", column + "cfl = 1.5\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"),
+        bad_scene("segregation1d, T < 0 on part of the grid",
+                  "[initial] T:", column + "[initial]\nPhi = 0.6\nT = \"z - 0.5\"\nphi = \"Phi/2\"\n"),
+        bad_scene("segregation1d, Phi >= 1 on part of the grid",
+                  "[initial] Phi:", column + "[initial]\nPhi = \"0.5 + z\"\nT = 1\nphi = 0\n"),
+        bad_scene(
+            "segregation1d, classic scheme, T < 0 at a face only", "[initial] T:",
+            column +
+                "[segregation]\nscheme = \"classic-godunov\"\n[initial]\nPhi = 0.6\nT = \"abs(z - 0.5) - 0.001\"\nphi = 0\n"),
         bad_scene("segregation1d, unknown scheme", "[segregation] scheme:",
                   column + "[segregation]\nscheme = \"upwind\"\n[initial]\n" + profiles + "phi = \"Phi/2\"\n"),
-        bad_scene("unknown key", "[sweep] pionts:",
-                  sweep + "[sweep]\nPhi_max = 0.6\npionts = 10\n"),
-        bad_scene("string where a number belongs", "[sweep] Phi_max:",
-                  sweep + "[sweep]\nPhi_max = \"0.6\"\n"),
-        bad_scene("unknown scene kind", "[scene] kind:",
-                  "[scene]\nkind = \"tumbler-magic\"\n" + dir),
-        bad_scene("out-of-range value (Phi_max >= Phi_rcp)", "[sweep] Phi_max:",
-                  sweep + "[sweep]\nPhi_max = 0.7\n"),
-        bad_scene("negative T from an expression", "[sweep] T:",
-                  sweep + "[sweep]\nPhi_max = 0.6\nT = \"0.3 - Phi\"\n"),
-        bad_scene("malformed expression", "[sweep] T:",
-                  sweep + "[sweep]\nPhi_max = 0.6\nT = \"1e-4 * (Phi\"\n"),
-        bad_scene("unknown section", "[materail]:",
-                  sweep + "[sweep]\nPhi_max = 0.6\n[materail]\neta0 = 1e-4\n"),
-        bad_scene("unknown compressibility law", "[material] g_law:",
-                  sweep + "[sweep]\nPhi_max = 0.6\n[material]\ng_law = \"carnahan\"\n"),
-        bad_scene("TOML syntax error", "TOML syntax error",
-                  sweep + "[sweep]\nPhi_max = 0.6 0.7\n"),
+        bad_scene("unknown key", "[sweep] pionts:", sweep + "[sweep]\nPhi_max = 0.6\npionts = 10\n"),
+        bad_scene("string where a number belongs", "[sweep] Phi_max:", sweep + "[sweep]\nPhi_max = \"0.6\"\n"),
+        bad_scene("unknown scene kind", "[scene] kind:", "[scene]\nkind = \"tumbler-magic\"\n" + dir),
+        bad_scene("out-of-range value (Phi_max >= Phi_rcp)", "[sweep] Phi_max:", sweep + "[sweep]\nPhi_max = 0.7\n"),
+        bad_scene("negative T from an expression", "[sweep] T:", sweep + "[sweep]\nPhi_max = 0.6\nT = \"0.3 - Phi\"\n"),
+        bad_scene("malformed expression", "[sweep] T:", sweep + "[sweep]\nPhi_max = 0.6\nT = \"1e-4 * (Phi\"\n"),
+        bad_scene("unknown section", "[materail]:", sweep + "[sweep]\nPhi_max = 0.6\n[materail]\neta0 = 1e-4\n"),
+        bad_scene("unknown compressibility law",
+                  "[material] g_law:", sweep + "[sweep]\nPhi_max = 0.6\n[material]\ng_law = \"carnahan\"\n"),
+        bad_scene("TOML syntax error", "TOML syntax error", sweep + "[sweep]\nPhi_max = 0.6 0.7\n"),
         bad_arguments("run, missing scene file", "run '" + (out / "absent.toml").string() + "'"),
-        {"run, output directory that cannot be created", "run SCENE --output-dir /proc/granseg-out", sweep + "[sweep]\nPhi_max = 0.6\n", {}, ""},
+        {"run, output directory that cannot be created",
+         "run SCENE --output-dir /proc/granseg-out",
+         sweep + "[sweep]\nPhi_max = 0.6\n",
+         {},
+         ""},
         bad_arguments("closures, non-numeric --Phi", "closures --Phi abc --phi-hat 0.4 --T 1e-4"),
         bad_arguments("closures, --Phi >= Phi_rcp", "closures --Phi 0.7 --phi-hat 0.4 --T 1e-4"),
         bad_arguments("closures, negative --T", "closures --Phi 0.5 --phi-hat 0.4 --T -1"),
         bad_arguments("closures, missing --T", "closures --Phi 0.5 --phi-hat 0.4"),
-        {"closures, unknown g_law in --scene", closures + " --scene SCENE", "[material]\ng_law = \"carnahan\"\n", {}, "[material] g_law:"},
+        {"closures, unknown g_law in --scene",
+         closures + " --scene SCENE",
+         "[material]\ng_law = \"carnahan\"\n",
+         {},
+         "[material] g_law:"},
         bad_arguments("unknown command", "segregate"),
         bad_arguments("riemann, phi_L > Phi_L", "riemann 0.6 0.5 0.3 0.8"),
         bad_arguments("riemann, Phi_R = 1", "riemann 0.1 0.5 0.3 1"),
@@ -222,7 +225,8 @@ std::vector<Case> cli_cases(const fs::path& out) {
                  t.count(l + ": tumbler_metrics.dat written", fs::exists(o / "tumbler_metrics.dat"), 1);
              }),
         good("run, valid tumbler scene", "run SCENE",
-             "[scene]\nkind = \"tumbler\"\n" + dir + "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n",
+             "[scene]\nkind = \"tumbler\"\n" + dir +
+                 "[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.02\nangle_from = 0\nframes = 2\n",
              [](CheckTable& t, const std::string& l, const Outcome&, const fs::path& o) {
                  long written = 0;
                  for (const char* name : {"history.dat", "summary.dat", "initial_lab.dat", "fields_lab.dat",
@@ -273,8 +277,8 @@ void check_riemann_agreement(CheckTable& t, const Cli& cli) {
             const auto& [L, R] = q;
             auto S = [](double a) { return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0; };
             const Outcome o = cli.run("riemann " + arg(L.phi) + " " + arg(L.Phi) + " " + arg(R.phi) + " " + arg(R.Phi) +
-                                      " --TL " + arg(L.a * L.a) + " --TR " + arg(R.a * R.a) + " --SL " + arg(S(L.a)) +
-                                      " --SR " + arg(S(R.a)) + " --sample " + std::to_string(kSamples));
+                                      " --TL " + arg(L.a * L.a) + " --TR " + arg(R.a * R.a) + " --SL " + arg(S(L.a)) + " --SR " +
+                                      arg(S(R.a)) + " --sample " + std::to_string(kSamples));
             ++runs;
             const auto cases = values_of(o.out, "case"), regions = values_of(o.out, "region"), fluxes = values_of(o.out, "flux");
             if (o.status != 0 || cases.size() != 1 || regions.size() != 1 || fluxes.size() != 1) {
@@ -326,7 +330,8 @@ int main(int argc, char** argv) {
         }
         expect_rejected(t, c.label, o, out);
         if (!c.names.empty())
-            t.count(c.label + ": message starts with the file and names the key", o.err.rfind(scene.string() + ": " + c.names, 0) == 0, 1);
+            t.count(c.label + ": message starts with the file and names the key",
+                    o.err.rfind(scene.string() + ": " + c.names, 0) == 0, 1);
     }
     check_riemann_agreement(t, cli);
     fs::remove_all(work);

@@ -84,12 +84,10 @@ double divergence_exponent_error(const Material& m) {
 }
 
 void check_divergence(CheckTable& table, const Material& power) {
-    table.near("divergence exponent error, power law (beta = 1)", divergence_exponent_error(power), 0.0,
-               kExponentTol);
+    table.near("divergence exponent error, power law (beta = 1)", divergence_exponent_error(power), 0.0, kExponentTol);
     Material lun = power;
     lun.g_law = CompressibilityLaw::lun_savage;
-    table.near("divergence exponent error, Lun-Savage (2.5 Phi_rcp)", divergence_exponent_error(lun), 0.0,
-               kExponentTol);
+    table.near("divergence exponent error, Lun-Savage (2.5 Phi_rcp)", divergence_exponent_error(lun), 0.0, kExponentTol);
 
     double smallest = INFINITY;
     long finite_at_rcp = 0;
@@ -172,18 +170,16 @@ void check_steady_shear(CheckTable& table, const Material& m) {
     table.near("shear: tau/p at gamma_dot = 1e-2 .. 1e2 (min)", mu_min, expected_mu, kRoundOff * expected_mu);
     table.at_most("shear: max |(tau/p)/sqrt(2 eta0 eps0/3) - 1|", worst_mu, kRoundOff);
     table.near("Bagnold: d ln p_k / d ln gamma_dot (worst state)", worst_slope, 2.0, kSlopeTol);
-    table.near("eq. (21) factor: (tau/p) / sqrt(eps0 eta0)", mu_max / std::sqrt(m.eps0 * m.eta0),
-               std::sqrt(2.0 / 3.0), kRoundOff);
+    table.near("eq. (21) factor: (tau/p) / sqrt(eps0 eta0)", mu_max / std::sqrt(m.eps0 * m.eta0), std::sqrt(2.0 / 3.0),
+               kRoundOff);
 }
 
 void check_low_temperature(CheckTable& table, const Material& m) {
     const double x = 0.4, co = m.packing.Phi_co(x);
     auto exponent = [&](double Phi, double Ta, double Tb) {
-        return std::log(evaluate_closures(m, Phi, x, Tb).eta / evaluate_closures(m, Phi, x, Ta).eta) /
-               std::log(Tb / Ta);
+        return std::log(evaluate_closures(m, Phi, x, Tb).eta / evaluate_closures(m, Phi, x, Ta).eta) / std::log(Tb / Ta);
     };
-    table.near("yield regime: d ln eta / d ln T as T -> 0", exponent(co + 0.01, 1e-12, 1e-10), -0.5,
-               kAsymptoticExponentTol);
+    table.near("yield regime: d ln eta / d ln T as T -> 0", exponent(co + 0.01, 1e-12, 1e-10), -0.5, kAsymptoticExponentTol);
     table.near("below Phi_co: d ln eta / d ln T", exponent(co - 0.05, 1e-12, 1e-10), 0.5, kRoundOff * 100);
     long bad = 0;
     for (int i = 0; i < 100; ++i) {
@@ -234,8 +230,14 @@ void write_figure_data(const verify::ProgramOptions& options, const Material& m)
         for (int i = 1; i <= 200; ++i) Phis.push_back(rcp * (1.0 - 0.1 * std::pow(1e-2, i / 200.0)));
         for (double Phi : Phis) {
             const ClosureValues v = evaluate_closures(m, Phi, x, 1e-4);
-            curves.row({{"phi_hat", x}, {"Phi", Phi}, {"g", v.g}, {"p_k", v.p_k}, {"p_y", v.p_y}, {"p", v.p},
-                         {"eta", v.eta}, {"c", std::sqrt(v.c2)}});
+            curves.row({{"phi_hat", x},
+                        {"Phi", Phi},
+                        {"g", v.g},
+                        {"p_k", v.p_k},
+                        {"p_y", v.p_y},
+                        {"p", v.p},
+                        {"eta", v.eta},
+                        {"c", std::sqrt(v.c2)}});
         }
         curves.blank();
         curves.blank();
@@ -245,14 +247,15 @@ void write_figure_data(const verify::ProgramOptions& options, const Material& m)
     DataTable points;
     for (const auto& c : m.packing.table().comments) points.comment(c);
     for (std::size_t i = 0; i < m.packing.table().phi_hat.size(); ++i)
-        points.row({{"phi_hat", m.packing.table().phi_hat[i]}, {"Phi_rcp", m.packing.table().Phi_rcp[i]},
-                     {"Phi_co", m.packing.table().Phi_co[i]}});
+        points.row({{"phi_hat", m.packing.table().phi_hat[i]},
+                    {"Phi_rcp", m.packing.table().Phi_rcp[i]},
+                    {"Phi_co", m.packing.table().Phi_co[i]}});
     verify::write_data(options, "packing_table.dat", points);
 
     DataTable fit;
     fit.comment("degree-" + std::to_string(m.packing.degree()) + " least-squares fits of packing_table.dat");
-    for (int i = 0; i <= 200; ++i) fit.row({{"phi_hat", i / 200.0}, {"Phi_rcp", m.packing.Phi_rcp(i / 200.0)},
-                                             {"Phi_co", m.packing.Phi_co(i / 200.0)}});
+    for (int i = 0; i <= 200; ++i)
+        fit.row({{"phi_hat", i / 200.0}, {"Phi_rcp", m.packing.Phi_rcp(i / 200.0)}, {"Phi_co", m.packing.Phi_co(i / 200.0)}});
     verify::write_data(options, "packing_fit.dat", fit);
 }
 

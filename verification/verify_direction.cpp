@@ -27,10 +27,10 @@
 #include <random>
 
 using namespace granseg;
+using Eigen::Matrix3d, Eigen::Vector3d;
 using granseg::verify::CheckTable;
 using granseg::verify::direction_error;
 using granseg::verify::kRoundOff;
-using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 
@@ -123,8 +123,7 @@ void check_shear_plus_extension(CheckTable& t, const verify::ProgramOptions& opt
         worst = std::max(worst, direction_error(r.d_s, expected));
         not_ok += r.status != DirectionStatus::ok;
         const double tilt_deg = std::acos(std::min(1.0, std::fabs(r.d_s.dot(e_z)))) * 180 / M_PI;
-        tilt.row({{"e_over_gamma", e / gamma}, {"tilt_deg", tilt_deg},
-                   {"tilt_exact_deg", std::fabs(90 - angle * 180 / M_PI)}});
+        tilt.row({{"e_over_gamma", e / gamma}, {"tilt_deg", tilt_deg}, {"tilt_exact_deg", std::fabs(90 - angle * 180 / M_PI)}});
     }
     verify::write_data(options, "direction_tilt.dat", tilt);
     t.at_most("shear + extension, e/gamma in [-3, 3]: max |d_s -/+ exact|", worst, kDirectionTol);
@@ -143,8 +142,9 @@ void check_chute(CheckTable& t) {
         const double eta = H * i / 20.0;
         const double U = U0 * (1 - std::pow(1 - eta / H, 1.5)), dU = 1.5 * U0 / H * std::sqrt(1 - eta / H);
         const SegregationDirection r = segregation_direction(dU * tangent * normal.transpose(), U * tangent);
-        const DirectionStatus expected = i == 0 ? DirectionStatus::zero_velocity
-                                                : i == 20 ? DirectionStatus::no_shear : DirectionStatus::ok;
+        const DirectionStatus expected = i == 0    ? DirectionStatus::zero_velocity
+                                         : i == 20 ? DirectionStatus::no_shear
+                                                   : DirectionStatus::ok;
         wrong_status += r.status != expected;
         if (i == 20) continue;
         worst_d = std::max(worst_d, direction_error(r.d_s, normal));
@@ -175,7 +175,7 @@ void check_documented_flows(CheckTable& t, const verify::ProgramOptions& options
     const Matrix3d rotation = verify::spin_matrix(Vector3d(0.3, -1.2, 0.5));
     expect(t, "pure rotation", rotation, Vector3d(1, 0, 0), DirectionStatus::no_shear, Vector3d::Zero());
     t.near_relative("pure rotation: gamma_dot = sqrt(2)|w| (eq. 43, frame-dependent)",
-           segregation_direction(rotation, e_x).gamma_dot, std::sqrt(2 * (0.09 + 1.44 + 0.25)), kNormTol);
+                    segregation_direction(rotation, e_x).gamma_dot, std::sqrt(2 * (0.09 + 1.44 + 0.25)), kNormTol);
 
     // Compressible 2-D shear with expansion a > gamma/2: the in-plane eigenvalues a +/- gamma/2 are
     // both positive, so in 3-D the out-of-plane 0 is kappa_min, the candidates (k_max +/- e_y)/sqrt(2)

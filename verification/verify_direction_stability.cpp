@@ -2,8 +2,8 @@
 //
 // sign choice: for 20000 random (grad, u) with Gaussian entries, the two candidates are rebuilt from an
 //     independent implementation (GSL gsl_eigen_symmv: Householder tridiagonalisation and
-//     implicit symmetric QR in another library): d_s must be one of them and the one with the smaller |d . u|. Flipping the sign of
-//     u, of k_max or of k_min must leave P = d_s d_s^T unchanged.
+//     implicit symmetric QR in another library): d_s must be one of them and the one with the smaller |d . u|. Flipping the sign
+//     of u, of k_max or of k_min must leave P = d_s d_s^T unchanged.
 // eigen solvers: Eigen's iterative solver (compute) and closed form (computeDirect) agree on random spectra
 //     with relative gaps >= 0.1 (eigenvalues, residuals, d_s). Near a repeated eigenvalue, with
 //     kappa^s = Q diag(-1, 1 - 2g, 1) Q^T (relative gap g between kappa_max and kappa_mid; and the
@@ -20,18 +20,18 @@
 #include "harness/random_tensors.hpp"
 #include "harness/tolerances.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
+#include <Eigen/Eigenvalues>
 
 #include <cfloat>
 #include <cmath>
 #include <random>
 
 using namespace granseg;
+using Eigen::Matrix3d, Eigen::Vector3d;
 using granseg::verify::CheckTable;
 using granseg::verify::direction_error;
-using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 
@@ -112,12 +112,12 @@ void check_sign_choice(CheckTable& t) {
         }
         ++compared;
         worst_candidate = std::max(worst_candidate, std::min(direction_error(r.d_s, c_plus), direction_error(r.d_s, c_minus)));
-        worst_orthogonality = std::max(worst_orthogonality, (std::fabs(r.d_s.dot(u)) - std::min(along_plus, along_minus)) / u.norm());
+        worst_orthogonality =
+            std::max(worst_orthogonality, (std::fabs(r.d_s.dot(u)) - std::min(along_plus, along_minus)) / u.norm());
     }
     gsl_eigen_symmv_free(ws);
-    t.note("sign choice: " + std::to_string(samples) + " random (grad, u); " + std::to_string(compared) +
-           " compared with GSL (" + std::to_string(close_gap) + " with relative gap < 1e-3, " + std::to_string(near_tie) +
-           " near-ties left out)");
+    t.note("sign choice: " + std::to_string(samples) + " random (grad, u); " + std::to_string(compared) + " compared with GSL (" +
+           std::to_string(close_gap) + " with relative gap < 1e-3, " + std::to_string(near_tie) + " near-ties left out)");
     t.at_most("max distance of d_s from the nearer GSL candidate", worst_candidate, kCandidateTol);
     t.at_most("max (|d_s.u| - min |c.u|)/|u| (d_s is the more orthogonal)", worst_orthogonality, kOrthogonalityTol);
     t.at_most("max |P change| when u, k_max or k_min flips sign", worst_flip, kFlipTol);
@@ -159,8 +159,8 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
     DirectionOptions direct;
     direct.method = EigenMethod::closed_form;
     DataTable curve;
-    curve.comment("max over 400 random Q (both mirror cases) of |d_s -/+ exact|; bound = " +
-                  verify::format(kStabilityConstant) + " eps/g");
+    curve.comment("max over 400 random Q (both mirror cases) of |d_s -/+ exact|; bound = " + verify::format(kStabilityConstant) +
+                  " eps/g");
     double worst_ratio = 0, worst_ratio_direct = 0;
     LineFit fit;  // ln(error of the closed form) against ln g
     long wrong_status = 0;
@@ -187,14 +187,16 @@ void check_near_repeated(CheckTable& t, const verify::ProgramOptions& options) {
         fit.add(std::log(g), std::log(err_cf));
         worst_ratio = std::max(worst_ratio, err_it * g / DBL_EPSILON);
         worst_ratio_direct = std::max(worst_ratio_direct, err_cf * g / DBL_EPSILON);
-        curve.row({{"relative_gap", g}, {"err_iterative", err_it}, {"err_closed_form", err_cf},
-                    {"bound", kStabilityConstant * DBL_EPSILON / g}});
+        curve.row({{"relative_gap", g},
+                   {"err_iterative", err_it},
+                   {"err_closed_form", err_cf},
+                   {"bound", kStabilityConstant * DBL_EPSILON / g}});
     }
     verify::write_data(options, "direction_stability.dat", curve);
     t.note("eigen solvers: near a repeated extreme eigenvalue, relative gap g = 1e-1 .. 1e-15");
     t.at_most("iterative: max over g of |d_s error| g/eps (bound C)", worst_ratio, kStabilityConstant);
-    t.note("  closed form: max |d_s error| g/eps = " + verify::format(worst_ratio_direct) +
-           ", error ~ g^" + verify::format(fit.slope()) + " (reported, not bounded: use the iterative solver)");
+    t.note("  closed form: max |d_s error| g/eps = " + verify::format(worst_ratio_direct) + ", error ~ g^" +
+           verify::format(fit.slope()) + " (reported, not bounded: use the iterative solver)");
     t.count("status repeated_eigenvalue iff g < min_relative_gap: wrong, count", wrong_status, 0);
 }
 

@@ -135,7 +135,8 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
             n.numeric_lines += c.numeric_lines;
             n.numbers += c.numbers;
             n.mutants_agreeing += c.mutants_agreeing;
-            if (c.mutants_agreeing > 0) t.note("  " + where + ": with one digit changed, this line still agrees: " + c.first_mutant_agreeing);
+            if (c.mutants_agreeing > 0)
+                t.note("  " + where + ": with one digit changed, this line still agrees: " + c.first_mutant_agreeing);
         }
         after_command = false;  // an output block belongs to the command block right before it
     }
@@ -193,13 +194,18 @@ std::vector<DeclaredInput> read_inputs(CheckTable& t, const Repository& repo) {
 void check_number_rules(CheckTable& t, const std::vector<DeclaredInput>& inputs, const NumberCounts& n) {
     long unused = 0;
     for (std::size_t i = 0; i < inputs.size(); ++i)
-        if (n.uses[i] == 0) ++unused, t.note("  docs/checked_pages.md line " + std::to_string(inputs[i].line) + ": no page uses " + inputs[i].expression);
+        if (n.uses[i] == 0)
+            ++unused, t.note("  docs/checked_pages.md line " + std::to_string(inputs[i].line) + ": no page uses " +
+                             inputs[i].expression);
     t.count("declared inputs that no page uses (of " + std::to_string(inputs.size()) + ")", unused, 0);
     const std::string typed = "the angle is 23.40 deg\nthe run took 132 s, 93 % of it in 12,503 steps\n";
-    const std::string allowed = "Sect. 4.2 and `dt = 0.5` and <!-- value: docs/x.md \"y\" -->0.936<!-- /value -->\n```\n0.25\n```\n";
+    const std::string allowed =
+        "Sect. 4.2 and `dt = 0.5` and <!-- value: docs/x.md \"y\" -->0.936<!-- /value -->\n```\n0.25\n```\n";
     std::vector<long> ignored;
-    t.count("number self-check: hand-typed sample numbers flagged (of 4)", static_cast<long>(hand_typed_numbers(typed, "docs/x.md", inputs, ignored).size()), 4);
-    t.count("number self-check: declared, spanned and code numbers flagged", static_cast<long>(hand_typed_numbers(allowed, "docs/x.md", inputs, ignored).size()), 0);
+    t.count("number self-check: hand-typed sample numbers flagged (of 4)",
+            static_cast<long>(hand_typed_numbers(typed, "docs/x.md", inputs, ignored).size()), 4);
+    t.count("number self-check: declared, spanned and code numbers flagged",
+            static_cast<long>(hand_typed_numbers(allowed, "docs/x.md", inputs, ignored).size()), 0);
 }
 
 /// The text with its first digit changed (the generated-block self-check).
@@ -236,11 +242,13 @@ void check_generated(CheckTable& t, const Repository& repo, const std::string& p
         shown.push_back(g.name);
         const fs::path fresh = fresh_table(repo.build, g.name);
         if (fresh.empty() || !compared(g.name)) {
-            t.note("  " + g.name + (fresh.empty() ? ": no fresh output in build/ (its program has not run); committed copy used"
-                                                  : ": a run's cost, the machine's: not compared (make docs-refresh copies it)"));
+            t.note("  " + g.name +
+                   (fresh.empty() ? ": no fresh output in build/ (its program has not run); committed copy used"
+                                  : ": a run's cost, the machine's: not compared (make docs-refresh copies it)"));
             continue;
         }
-        t.count(where + ": committed copy equals fresh " + fresh.lexically_relative(repo.build).string() + " (else make docs-refresh)",
+        t.count(where + ": committed copy equals fresh " + fresh.lexically_relative(repo.build).string() +
+                    " (else make docs-refresh)",
                 read_text(fresh) == copy ? 0 : 1, 0);
     }
 }
@@ -305,20 +313,24 @@ void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_d
 
 /// The detectors flag what they look for and pass what they must not flag.
 void check_detectors(CheckTable& t, const TreeNames& tree) {
-    const std::string history = "measured on 2 December 2026\nin May 2025\nmain af0974d\na freshly booted Intel Xeon\n"
-                                "on 2026-12-03\nload average 0.4\n";
+    const std::string history =
+        "measured on 2 December 2026\nin May 2025\nmain af0974d\na freshly booted Intel Xeon\n"
+        "on 2026-12-03\nload average 0.4\n";
     const std::string clean = "Gray & Thornton (2005)\nN = 1600, 12800 cells\n#1f77b4 colour\np_k = 1.046400526e-05\n";
     t.count("detector self-check: history sample lines flagged (of 6)", static_cast<long>(history_findings(history).size()), 6);
     t.count("detector self-check: clean sample lines flagged", static_cast<long>(history_findings(clean).size()), 0);
     const std::string outside = std::string("see ../") + "sha" + "red/paper/NOTES" + ".md\n(model" + ".md 3.4)\n";
-    t.count("detector self-check: outside-reference sample lines flagged (of 2)", static_cast<long>(outside_references(outside).size()), 2);
+    t.count("detector self-check: outside-reference sample lines flagged (of 2)",
+            static_cast<long>(outside_references(outside).size()), 2);
     // Invented names of each kind (split so that this file does not hold them whole), then real ones.
     const std::string invented = std::string("`FlowSolver::nonexis") + "tent_stage()`\n`make nonexis" + "tent-target`\n" +
                                  "`src/flow/nonexis" + "tent_file.cpp`\n`[flow] nonexis" + "tent_key = 1`\n`--nonexis" +
                                  "tent-option`\n";
-    const std::string real = "`FlowSolver::step()`\n`make verify`\n`src/flow_pressure/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
-                             "`--data`\n`steps_dt_max`\n`time = 1.5 s`\n";
-    t.count("detector self-check: invented names flagged (of 5)", static_cast<long>(unknown_names(invented, "docs/x.md", tree).size()), 5);
+    const std::string real =
+        "`FlowSolver::step()`\n`make verify`\n`src/flow_pressure/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
+        "`--data`\n`steps_dt_max`\n`time = 1.5 s`\n";
+    t.count("detector self-check: invented names flagged (of 5)",
+            static_cast<long>(unknown_names(invented, "docs/x.md", tree).size()), 5);
     t.count("detector self-check: existing names flagged", static_cast<long>(unknown_names(real, "docs/x.md", tree).size()), 0);
 }
 
@@ -385,7 +397,8 @@ int main(int argc, char** argv) {
     const fs::path scratch = fs::temp_directory_path() / ("granseg_docs_" + std::to_string(::getpid()));
     fs::create_directories(scratch / "out");
     fs::create_directory_symlink(repo.build, scratch / "build");
-    for (const char* dir : {"verification", "figures", "docs", "src"}) fs::create_directory_symlink(repo.root / dir, scratch / dir);
+    for (const char* dir : {"verification", "figures", "docs", "src"})
+        fs::create_directory_symlink(repo.root / dir, scratch / dir);
 
     const TreeNames tree = tree_names(repo.root);
     BlockCounts n;

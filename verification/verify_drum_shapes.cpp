@@ -73,8 +73,8 @@ std::string drum_keys(int cells, const std::string& shape) {
 
 /// A tumbler scene (coupled drum) from its [drum] and [initial] keys.
 TumblerScene read_scene(const std::string& name, double t_end, const std::string& keys) {
-    const std::string text = "[scene]\nkind = \"tumbler\"\n[run]\nt_end = " + verify::format(t_end) + "\nangle_from = " +
-                             verify::format(t_end / 2) + "\nvtk = false\nframes = 0\n" + keys;
+    const std::string text = "[scene]\nkind = \"tumbler\"\n[run]\nt_end = " + verify::format(t_end) +
+                             "\nangle_from = " + verify::format(t_end / 2) + "\nvtk = false\nframes = 0\n" + keys;
     const SceneFile file = SceneFile::parse(text, name);
     file.choice("scene", "kind", {"tumbler"});
     TumblerScene scene = read_tumbler(file);
@@ -101,12 +101,14 @@ void check_geometry(CheckTable& t) {
             }
         const int n = shape.sides();
         const double exact = n == 0 ? M_PI * R * R : 0.5 * n * R * R * std::sin(2 * M_PI / n);
-        t.near_relative("1. exact cell areas summed over the grid / area, " + (n == 0 ? std::string("circle") : std::to_string(n) + "-gon"),
-                        sum, exact, kAreaTol);
+        t.near_relative(
+            "1. exact cell areas summed over the grid / area, " + (n == 0 ? std::string("circle") : std::to_string(n) + "-gon"),
+            sum, exact, kAreaTol);
     }
     const DrumShape square = DrumShape::polygon(4, R, 0.0);
     double largest = 0.0;
-    for (int step = 0; step < 90; ++step) largest = std::max(largest, std::fabs(square.surface_offset(0.5 * square.area(), step * M_PI / 90)));
+    for (int step = 0; step < 90; ++step)
+        largest = std::max(largest, std::fabs(square.surface_offset(0.5 * square.area(), step * M_PI / 90)));
     t.at_most("1. half-full square: largest |distance of the surface from the axis| over a turn (m)", largest, 1e-15);
 }
 
@@ -163,10 +165,11 @@ void check_square_at_rest(CheckTable& t, const Material& m) {
     for (double v : z) height.push_back(v - floor);
     double surface = 0.0;
     const PackingFit& p = m.packing;
-    const std::vector<double> reference =
-        verify::lithostatic_profile(m, s.T_floor, p.Phi_rcp(s.phi_hat), p.Phi_co(s.phi_hat), drum.gravity, mass, height, &surface);
+    const std::vector<double> reference = verify::lithostatic_profile(m, s.T_floor, p.Phi_rcp(s.phi_hat), p.Phi_co(s.phi_hat),
+                                                                      drum.gravity, mass, height, &surface);
     double error = 0.0;
-    for (std::size_t k = 0; k < Phi.size() && height[k] + 0.5 * g.h[2] < surface; ++k) error = std::max(error, std::fabs(Phi[k] - reference[k]));
+    for (std::size_t k = 0; k < Phi.size() && height[k] + 0.5 * g.h[2] < surface; ++k)
+        error = std::max(error, std::fabs(Phi[k] - reference[k]));
     t.note("3. square drum at rest: " + std::to_string(g.n[0]) + " x " + std::to_string(g.n[2]) + " cells, " +
            std::to_string(solver.steps()) + " steps to t = " + verify::format(kRestTime) + " s");
     t.at_most("3. square at rest: max |Phi - Phi_lithostatic (GSL)| below the surface cell", error, kRestProfileTol);
@@ -214,7 +217,8 @@ void check_triangle(CheckTable& t) {
             long outside = 0;
             run_coupled_tumbler(tumbler, scene.run, [&](const CoupledTumbler& k) {
                 const std::array<double, 2> now = amounts(k);
-                small = std::max(small, std::fabs(now[0] - start[0]) / all), large = std::max(large, std::fabs(now[1] - start[1]) / all);
+                small = std::max(small, std::fabs(now[0] - start[0]) / all),
+                large = std::max(large, std::fabs(now[1] - start[1]) / all);
                 for (std::size_t c = 0; c < k.phi().size(); ++c)
                     if (k.grid().is_inside(c)) outside += !(k.phi()[c] >= 0.0 && k.phi()[c] <= k.flow().Phi()[c]);
             });
@@ -232,8 +236,8 @@ void check_triangle(CheckTable& t) {
     const char* names[4] = {"Phi", "phi", "u_x (m/s)", "u_z (m/s)"};
     const std::array<double, 4> loose = mirror_differences(grid, fields[0][0], fields[0][1]);
     const std::array<double, 4> exact = mirror_differences(grid, fields[1][0], fields[1][1]);
-    t.note("4. mirror at the default pressure tolerance: max |Phi, phi, u_x, u_z - mirrored| = " + verify::format(loose[0]) + ", " +
-           verify::format(loose[1]) + ", " + verify::format(loose[2]) + ", " + verify::format(loose[3]));
+    t.note("4. mirror at the default pressure tolerance: max |Phi, phi, u_x, u_z - mirrored| = " + verify::format(loose[0]) +
+           ", " + verify::format(loose[1]) + ", " + verify::format(loose[2]) + ", " + verify::format(loose[3]));
     for (int f = 0; f < 4; ++f)
         t.at_most(std::string("4. mirror, pressure to ") + verify::format(kTightPressure) + ": max |" + names[f] + " - mirrored|",
                   exact[f], kMirrorTol);

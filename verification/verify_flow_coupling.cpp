@@ -82,7 +82,8 @@ void drum_handover(CheckTable& table, const Material& m, TimeStepping mode) {
         // Periodic ends along y: face layer 0 and layer ny are the same face.
         const std::vector<double>& My = solver.mass_flux(1);
         for (int k = 0; k < n; ++k)
-            for (int i = 0; i < n; ++i) periodic = std::max(periodic, std::fabs(My[g.face_index(1, i, 0, k)] - My[g.face_index(1, i, ny, k)]));
+            for (int i = 0; i < n; ++i)
+                periodic = std::max(periodic, std::fabs(My[g.face_index(1, i, 0, k)] - My[g.face_index(1, i, ny, k)]));
     }
     const std::string tag = verify::mode_tag(mode);
     table.note(tag + "drum 24 x 2 x 24, phi_hat = 0.3, 3 s: " + std::to_string(solver.steps()) + " steps checked");
@@ -111,9 +112,10 @@ void packing_follows_phi(CheckTable& table, const Material& m, TimeStepping mode
     double mass = 0.0;
     for (int k = 0; k < nz; ++k) z.push_back(g.center(2, k)), mass += solver.Phi()[k] * g.h[2];
     double surface = 0.0, other_surface = 0.0;
-    const auto own = verify::lithostatic_profile(m, s.T_floor, m.packing.Phi_rcp(x), m.packing.Phi_co(x), 9.81, mass, z, &surface);
-    const auto other = verify::lithostatic_profile(m, s.T_floor, m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat),
-                                                   9.81, mass, z, &other_surface);
+    const auto own =
+        verify::lithostatic_profile(m, s.T_floor, m.packing.Phi_rcp(x), m.packing.Phi_co(x), 9.81, mass, z, &surface);
+    const auto other = verify::lithostatic_profile(m, s.T_floor, m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat), 9.81,
+                                                   mass, z, &other_surface);
     double err_own = 0.0, separation = 0.0;
     for (int k = 0; k < nz; ++k) {
         if (z[k] + 1.5 * g.h[2] > std::min(surface, other_surface)) continue;
@@ -122,8 +124,10 @@ void packing_follows_phi(CheckTable& table, const Material& m, TimeStepping mode
     }
     // A solver that ignored phi would settle to the default mixture's profile, `separation` away;
     // at this resolution the discretisation error is ~1.5e-7 (verify_flow_rest), four orders below.
-    table.note(verify::mode_tag(mode) + "lithostatic profiles for phi_hat = 0.2 and 0.5 (GSL) differ by up to " + verify::format(separation));
-    table.at_most(verify::mode_tag(mode) + "column with phi_hat = 0.2: max |Phi - Phi_lithostatic(0.2)| / that", err_own / separation, 1e-3);
+    table.note(verify::mode_tag(mode) + "lithostatic profiles for phi_hat = 0.2 and 0.5 (GSL) differ by up to " +
+               verify::format(separation));
+    table.at_most(verify::mode_tag(mode) + "column with phi_hat = 0.2: max |Phi - Phi_lithostatic(0.2)| / that",
+                  err_own / separation, 1e-3);
 }
 
 }  // namespace

@@ -64,7 +64,8 @@ double slope_shift(const Material& m, const FlowSettings& settings, double theta
     for (int k = 0; k < g.n[2]; ++k)
         for (int i = 0; i < g.n[0]; ++i) {
             const double depth = 0.003 + g.center(0, i) * std::tan(theta_deg * M_PI / 180.0) - g.center(2, k);
-            if (depth > 0.0) Phi[g.index(i, 0, k)] = verify::Phi_of_pressure(m, co * frame.gravity * depth, settings.T_floor, rcp, co);
+            if (depth > 0.0)
+                Phi[g.index(i, 0, k)] = verify::Phi_of_pressure(m, co * frame.gravity * depth, settings.T_floor, rcp, co);
         }
     solver.set_state(Phi, {zero, zero, zero}, zero);
     auto x_mass = [&] {
@@ -94,10 +95,12 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     for (int i = 0; i < 3; ++i) {
         crit[i] = verify::critical_angle(m, settings, sizes[i]);
         angles.row({{"nz", static_cast<double>(sizes[i])}, {"theta_c_deg", crit[i]}, {"atan_mu_deg", theta_mu}});
-        table.note(verify::mode_tag(mode) + "nz = " + std::to_string(sizes[i]) + ": critical angle " + verify::format(crit[i]) + " deg");
+        table.note(verify::mode_tag(mode) + "nz = " + std::to_string(sizes[i]) + ": critical angle " + verify::format(crit[i]) +
+                   " deg");
     }
     for (int i = 1; i < 3; ++i)
-        table.at_least(verify::mode_tag(mode) + "critical angle -> atan(mu): order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
+        table.at_least(verify::mode_tag(mode) + "critical angle -> atan(mu): order, nz = " + std::to_string(sizes[i - 1]) +
+                           " -> " + std::to_string(sizes[i]),
                        std::log2(std::fabs(crit[i - 1] - theta_mu) / std::fabs(crit[i] - theta_mu)), kOrderMin);
 
     // 2. Below the friction angle: the flow stops; the remaining creep is set by T_floor.
@@ -111,8 +114,11 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         const verify::InclineRun start = run(theta, nz, 0.0);
         double worst = 0.0;
         for (int k = 0; k < nz; ++k) {
-            below.row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"u_x", r.u[k]},
-                        {"u_creep_law", in_bed(m, r.Phi[k]) ? creep * r.z[k] : 0.0}, {"T", r.T[k]}});
+            below.row({{"nz", static_cast<double>(nz)},
+                       {"z", r.z[k]},
+                       {"u_x", r.u[k]},
+                       {"u_creep_law", in_bed(m, r.Phi[k]) ? creep * r.z[k] : 0.0},
+                       {"T", r.T[k]}});
             if (in_bed(m, r.Phi[k])) worst = std::max(worst, std::fabs(r.u[k] - creep * r.z[k]) / (creep * kInclineDepth));
         }
         below.blank();
@@ -123,11 +129,13 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         table.near_relative(tag + "max T / T_floor (flow stopped)", r.T_max / T_floor, 1.0, 1e-9);
         table.note(tag + "max |u - tan(theta) sqrt(T_floor) z/eta0| / (gamma_dot_creep depth) = " + verify::format(worst));
     }
-    table.at_least(verify::mode_tag(mode) + "18 deg: creep law error, order nz = 40 -> 80", std::log2(creep_error[0] / creep_error[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "18 deg: creep law error, order nz = 40 -> 80",
+                   std::log2(creep_error[0] / creep_error[1]), kOrderMin);
 
     // 3. Above the friction angle the layer accelerates.
     const verify::InclineRun fast = run(26.0, 32, kInclineWindow[1]);
-    table.at_least(verify::mode_tag(mode) + "26 deg: kinetic energy at 1.5 s / at 0.5 s (growth)", fast.kinetic[1] / fast.kinetic[0], 1.0);
+    table.at_least(verify::mode_tag(mode) + "26 deg: kinetic energy at 1.5 s / at 0.5 s (growth)",
+                   fast.kinetic[1] / fast.kinetic[0], 1.0);
 
     // 4. At the critical angle: the profiles against the boundary-value solution.
     DataTable profiles;
@@ -140,9 +148,12 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         table.note(tag + "relative spread of T in the bed " + verify::format(e.T_spread) + ", max |u - u_bvp|/u_bvp(depth) " +
                    verify::format(e.u) + ", max |Phi - Phi_bvp(GSL)| " + verify::format(e.Phi));
     }
-    table.at_least(verify::mode_tag(mode) + "critical angle: T spread -> 0 (uniform T), order nz = 32 -> 64", std::log2(spread[0] / spread[1]), kOrderMin);
-    table.at_least(verify::mode_tag(mode) + "critical angle: u -> u_bvp, order nz = 32 -> 64", std::log2(u_errors[0] / u_errors[1]), kOrderMin);
-    table.at_least(verify::mode_tag(mode) + "critical angle: Phi -> Phi_bvp, order nz = 32 -> 64", std::log2(Phi_errors[0] / Phi_errors[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "critical angle: T spread -> 0 (uniform T), order nz = 32 -> 64",
+                   std::log2(spread[0] / spread[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "critical angle: u -> u_bvp, order nz = 32 -> 64",
+                   std::log2(u_errors[0] / u_errors[1]), kOrderMin);
+    table.at_least(verify::mode_tag(mode) + "critical angle: Phi -> Phi_bvp, order nz = 32 -> 64",
+                   std::log2(Phi_errors[0] / Phi_errors[1]), kOrderMin);
     // 5. Oblique to the grid. A bed that holds moves only by settling and by the creep T_floor allows
     // (measured 0.38 mm explicit, 0.03 mm semi-implicit); a failing one by its slide (1.9 mm, the
     // semi-implicit step before its face predictor took the forces before viscosity): half a cell.
@@ -151,8 +162,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     table.at_most(verify::mode_tag(mode) + "19 deg slope oblique to the grid, 1 s: |move of the centre of mass| / h",
                   std::fabs(held) / h, 0.5);
     table.note(verify::mode_tag(mode) + "26 deg slope oblique to the grid, 1 s: the centre of mass moved " +
-               verify::format(1e3 * steep) + " mm (19 deg: " + verify::format(1e3 * held) + " mm; h = " +
-               verify::format(1e3 * h) + " mm)");
+               verify::format(1e3 * steep) + " mm (19 deg: " + verify::format(1e3 * held) +
+               " mm; h = " + verify::format(1e3 * h) + " mm)");
     verify::write_data(options, "flow_incline_angles" + verify::mode_suffix(mode) + ".dat", angles);
     verify::write_data(options, "flow_incline_below" + verify::mode_suffix(mode) + ".dat", below);
     verify::write_data(options, "flow_incline_profiles" + verify::mode_suffix(mode) + ".dat", profiles);

@@ -50,7 +50,7 @@ constexpr double kAsymptoticKh = 0.2;
 constexpr double kStepPerLength = 0.25;  // s/m
 
 constexpr int kSizes[] = {16, 32, 64, 128};
-constexpr int kTimeGrid = 32;                // cells per side of the time series (a grid of kSizes)
+constexpr int kTimeGrid = 32;                                // cells per side of the time series (a grid of kSizes)
 constexpr double kTimeSteps[] = {1.6e-3, 8e-4, 4e-4, 2e-4};  // s, dt_max of the time series
 static_assert(kSizes[1] == kTimeGrid, "the time series runs on the second grid (flows[1])");
 
@@ -81,7 +81,10 @@ void check_time_order(CheckTable& table, const verify::ProgramOptions& options, 
     std::vector<std::array<double, 3>> d;
     for (std::size_t i = 0; i + 1 < runs.size(); ++i) {
         d.push_back(field_difference(runs[i], runs[i + 1]));
-        data.row({{"dt", kTimeSteps[i]}, {"difference_Phi", d.back()[0]}, {"difference_u", d.back()[1]}, {"difference_T", d.back()[2]}});
+        data.row({{"dt", kTimeSteps[i]},
+                  {"difference_Phi", d.back()[0]},
+                  {"difference_u", d.back()[1]},
+                  {"difference_T", d.back()[2]}});
     }
     const char* names[3] = {"Phi", "u", "T"};
     for (std::size_t i = 1; i < d.size(); ++i) {
@@ -89,8 +92,10 @@ void check_time_order(CheckTable& table, const verify::ProgramOptions& options, 
                                 verify::format(kTimeSteps[i + 1]) + " s: ";
         for (int q = 0; q < 3; ++q) {
             const double p = std::log2(d[i - 1][q] / d[i][q]);
-            if (i == 1 || q == 0) table.note(tag + names[q] + " " + verify::format(p) + " (reported)");
-            else table.at_least(tag + names[q], p, kOrderMin);
+            if (i == 1 || q == 0)
+                table.note(tag + names[q] + " " + verify::format(p) + " (reported)");
+            else
+                table.at_least(tag + names[q], p, kOrderMin);
         }
     }
     verify::write_data(options, "flow_order_time.dat", data);
@@ -115,13 +120,17 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, TimeSt
             return;
         }
         const verify::ManufacturedRun& e = errors.back();
-        data.row({{"n", static_cast<double>(n)}, {"h", verify::kManufacturedSide / n}, {"error_Phi", e.error_Phi},
-                   {"error_u", e.error_u}, {"error_T", e.error_T}});
-        table.note(verify::mode_tag(mode) + "n = " + std::to_string(n) + ": mean |error| Phi " + verify::format(e.error_Phi) + ", |u| " +
-                   verify::format(e.error_u) + " m/s, T " + verify::format(e.error_T) + " m^2/s^2");
+        data.row({{"n", static_cast<double>(n)},
+                  {"h", verify::kManufacturedSide / n},
+                  {"error_Phi", e.error_Phi},
+                  {"error_u", e.error_u},
+                  {"error_T", e.error_T}});
+        table.note(verify::mode_tag(mode) + "n = " + std::to_string(n) + ": mean |error| Phi " + verify::format(e.error_Phi) +
+                   ", |u| " + verify::format(e.error_u) + " m/s, T " + verify::format(e.error_T) + " m^2/s^2");
     }
     for (std::size_t i = 1; i < errors.size(); ++i) {
-        const std::string tag = verify::mode_tag(mode) + "order " + std::to_string(kSizes[i - 1]) + " -> " + std::to_string(kSizes[i]) + ": ";
+        const std::string tag =
+            verify::mode_tag(mode) + "order " + std::to_string(kSizes[i - 1]) + " -> " + std::to_string(kSizes[i]) + ": ";
         const double o[3] = {std::log2(errors[i - 1].error_Phi / errors[i].error_Phi),
                              std::log2(errors[i - 1].error_u / errors[i].error_u),
                              std::log2(errors[i - 1].error_T / errors[i].error_T)};
@@ -146,7 +155,6 @@ int main(int argc, char** argv) {
     std::vector<verify::ManufacturedFlow> flows;
     for (int n : kSizes) flows.emplace_back(program.material, n);
     return verify::run_flow_modes(program, "Sect. 2.1 flow (e): order of accuracy, manufactured solution of the full system",
-                                  [&](CheckTable& table, const verify::ProgramOptions& options, const Material&, TimeStepping mode) {
-                                      check_mode(table, options, mode, flows);
-                                  });
+                                  [&](CheckTable& table, const verify::ProgramOptions& options, const Material&,
+                                      TimeStepping mode) { check_mode(table, options, mode, flows); });
 }

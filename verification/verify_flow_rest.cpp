@@ -96,8 +96,8 @@ std::vector<double> bed(int nz, double Phi_co, const Profile& profile) {
 
 /// Settles the bed Phi (one value per row) in a box of nx columns for t_end seconds, steps of at
 /// most stepping.dt_max and the pressure solved to stepping.pressure_tolerance.
-Run settle(const Material& m, TimeStepping mode, int nx, const std::vector<double>& initial, double t_end,
-           DataTable* history, const Stepping& stepping) {
+Run settle(const Material& m, TimeStepping mode, int nx, const std::vector<double>& initial, double t_end, DataTable* history,
+           const Stepping& stepping) {
     const int nz = static_cast<int>(initial.size());
     Grid g = Grid::plane_xz(nx, nz, 0.0, 0.0, kHeight / nz * nx, kHeight);
     FlowSettings s;
@@ -140,8 +140,8 @@ double profile_error(const Material& m, const Run& r, DataTable& profiles, int n
     const double x = FlowSettings{}.phi_hat, h = kHeight / nz;
     double mass = 0.0, surface = 0.0, worst = 0.0;
     for (double v : r.Phi) mass += v * h;
-    const std::vector<double> ref = verify::lithostatic_profile(m, kTFloor, m.packing.Phi_rcp(x), m.packing.Phi_co(x),
-                                                                kGravity, mass, r.z, &surface);
+    const std::vector<double> ref =
+        verify::lithostatic_profile(m, kTFloor, m.packing.Phi_rcp(x), m.packing.Phi_co(x), kGravity, mass, r.z, &surface);
     for (std::size_t k = 0; k < r.z.size(); ++k) {
         profiles.row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"Phi", r.Phi[k]}, {"Phi_reference", ref[k]}});
         if (r.z[k] + 1.5 * h < surface) worst = std::max(worst, std::fabs(r.Phi[k] - ref[k]));
@@ -174,8 +174,9 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
                       mass_bound(r.steps));
     }
     for (std::size_t i = 1; i < errors.size(); ++i)
-        table.at_least(verify::mode_tag(mode) + "observed order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
-                       std::log2(errors[i - 1] / errors[i]), kOrderMin);
+        table.at_least(
+            verify::mode_tag(mode) + "observed order, nz = " + std::to_string(sizes[i - 1]) + " -> " + std::to_string(sizes[i]),
+            std::log2(errors[i - 1] / errors[i]), kOrderMin);
     table.at_most(verify::mode_tag(mode) + "column nz = 60: max |Phi - Phi_lithostatic|", errors.back(), kProfileTol);
 
     // A box with side walls, started from the settled nz = 30 column in every column: the walls
@@ -189,7 +190,8 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): spread of Phi across rows", box.spread, kRowRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi u| after 2 s (m/s)", box.momentum, kMomentumRoundOff);
-    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): relative mass change", std::fabs(box.mass_change), mass_bound(box.steps));
+    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): relative mass change", std::fabs(box.mass_change),
+                  mass_bound(box.steps));
     if (mode == TimeStepping::semi_implicit) {  // the explicit step's dt is set by the sound speed
         const Run column = settle(m, mode, 1, bed(30, Phi_co, dense), kSettle, nullptr, kDefaultStepping);
         const Run kept = settle(m, mode, 6, column.Phi, kBalanced, nullptr, kDefaultStepping);

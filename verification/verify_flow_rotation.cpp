@@ -95,8 +95,8 @@ void rigid_rotation(CheckTable& table, const Material& m, TimeStepping mode, Dat
         for (std::size_t c = 0; c < g.cells(); ++c)
             if (g.is_inside(c)) T_max = std::max(T_max, solver.T()[c]);
         v_max = std::max(v_max, max_speed(solver));
-        if (solver.time() >= next) next += 0.1, history.row({{"t", solver.time()}, {"max_speed", max_speed(solver)},
-                                                              {"max_T", T_max}});
+        if (solver.time() >= next)
+            next += 0.1, history.row({{"t", solver.time()}, {"max_speed", max_speed(solver)}, {"max_T", T_max}});
     }
     const std::string tag = verify::mode_tag(mode);
     table.at_most(tag + "no gravity, 1 revolution: max |u| / (Omega R) over the run", v_max / (kOmega * kRadius), kRestFraction);
@@ -166,9 +166,9 @@ void slab(CheckTable& table, const Material& m, TimeStepping mode) {
     table.note(tag + "3-D slab " + std::to_string(n) + " x " + std::to_string(ny) + " x " + std::to_string(n) +
                " vs 2-D drum after 1.5 s (" + std::to_string(flat.steps()) + " steps); max T = " + verify::format(d.T_max) +
                "; the 2-D run from Phi perturbed by " + verify::format(perturbation) + " relative differs by " +
-               verify::format(kSampleSpread) + " times " +
-               verify::format(amplified.Phi / kSampleSpread) + " (Phi), " + verify::format(amplified.T / kSampleSpread) +
-               " (T / max T), " + verify::format(amplified.u / kSampleSpread) + " (u / Omega R)");
+               verify::format(kSampleSpread) + " times " + verify::format(amplified.Phi / kSampleSpread) + " (Phi), " +
+               verify::format(amplified.T / kSampleSpread) + " (T / max T), " + verify::format(amplified.u / kSampleSpread) +
+               " (u / Omega R)");
     const double u_linear = coupled ? kSlabTolCoupled : kSlabTol;
     table.at_most(tag + "slab vs 2-D: max |Phi_3D - Phi_2D| over all slices", d.Phi, std::max(kSlabTol, amplified.Phi));
     table.at_most(tag + "slab vs 2-D: max |T_3D - T_2D| / max T", d.T, std::max(kSlabTol, amplified.T));
@@ -209,8 +209,8 @@ void slab(CheckTable& table, const Material& m, TimeStepping mode) {
 /// Runs a scene file given as text; returns the largest relative mass change in its history and
 /// the number of steps of the last row.
 std::array<double, 2> scene_mass(const std::string& toml, TimeStepping mode) {
-    const SceneFile scene = SceneFile::parse(toml + "[flow]\ntime_stepping = \"" + choice_name(kTimeSteppings, mode) + "\"\n",
-                                             "verify.toml");
+    const SceneFile scene =
+        SceneFile::parse(toml + "[flow]\ntime_stepping = \"" + choice_name(kTimeSteppings, mode) + "\"\n", "verify.toml");
     const std::string kind = scene.choice("scene", "kind", {"bed-at-rest", "simple-shear", "inclined-plane", "tumbler-flow"});
     std::unique_ptr<SceneJob> job;
     for (const auto& k : scene_kinds())
@@ -245,19 +245,24 @@ std::array<double, 2> scene_mass(const std::string& toml, TimeStepping mode) {
 
 void scenes(CheckTable& table, TimeStepping mode) {
     const char* files[][2] = {
-        {"bed-at-rest", "[scene]\nkind = \"bed-at-rest\"\n[grid]\nnx = 8\nnz = 24\nheight = 0.06\n"
-                        "[bed]\nPhi = \"z < 0.04 ? 0.62 : 0\"\n[run]\nt_end = 0.5\n"},
-        {"simple-shear", "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 20\nheight = 0.01\n"
-                         "[shear]\nU = 0.1\nPhi = 0.62\n[run]\nt_end = 0.5\n"},
-        {"inclined-plane", "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 40\nheight = 0.02\n"
-                           "[plane]\nangle_deg = 24\nPhi = \"z < 0.01 ? 0.615 : 0\"\nT = 1e-4\nu = \"z < 0.01 ? 20 * z : 0\"\n[run]\nt_end = 0.5\n"},
-        {"tumbler-flow", "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 24\n"
-                         "[run]\nt_end = 3\nangle_from = 2\nvtk = false\n"},
+        {"bed-at-rest",
+         "[scene]\nkind = \"bed-at-rest\"\n[grid]\nnx = 8\nnz = 24\nheight = 0.06\n"
+         "[bed]\nPhi = \"z < 0.04 ? 0.62 : 0\"\n[run]\nt_end = 0.5\n"},
+        {"simple-shear",
+         "[scene]\nkind = \"simple-shear\"\n[grid]\nnz = 20\nheight = 0.01\n"
+         "[shear]\nU = 0.1\nPhi = 0.62\n[run]\nt_end = 0.5\n"},
+        {"inclined-plane",
+         "[scene]\nkind = \"inclined-plane\"\n[grid]\nnz = 40\nheight = 0.02\n"
+         "[plane]\nangle_deg = 24\nPhi = \"z < 0.01 ? 0.615 : 0\"\nT = 1e-4\nu = \"z < 0.01 ? 20 * z : 0\"\n[run]\nt_end = "
+         "0.5\n"},
+        {"tumbler-flow",
+         "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 24\n"
+         "[run]\nt_end = 3\nangle_from = 2\nvtk = false\n"},
     };
     for (const auto& f : files) {
         const std::array<double, 2> r = scene_mass(f[1], mode);
-        table.at_most(verify::mode_tag(mode) + "scene " + f[0] + ": relative mass change, " + verify::format(r[1]) + " steps", r[0],
-                      r[1] * DBL_EPSILON);
+        table.at_most(verify::mode_tag(mode) + "scene " + f[0] + ": relative mass change, " + verify::format(r[1]) + " steps",
+                      r[0], r[1] * DBL_EPSILON);
     }
 }
 

@@ -47,8 +47,7 @@ struct Shear {
     double T, tau_over_p, p_k, linear_error, T_spread;
 };
 
-Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, double T0, double t_end,
-          DataTable& profiles) {
+Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, double T0, double t_end, DataTable& profiles) {
     const Grid g = Grid::column(kCells, kHeight);
     FlowSettings s;
     s.time_stepping = mode;
@@ -67,8 +66,12 @@ Shear run(const Material& m, TimeStepping mode, double Phi, double gamma_dot, do
         const double T = solver.T()[k], z = g.center(2, k);
         T_min = std::min(T_min, T), T_max = std::max(T_max, T);
         r.linear_error = std::max(r.linear_error, std::fabs(solver.u(0)[k] - gamma_dot * (z - 0.5 * kHeight)) / U);
-        profiles.row({{"gamma_dot", gamma_dot}, {"Phi", Phi}, {"z", z}, {"u_x", solver.u(0)[k]}, {"T", T},
-                       {"p", evaluate_closures_at(m, solver.Phi()[k], T, rcp, co).p}});
+        profiles.row({{"gamma_dot", gamma_dot},
+                      {"Phi", Phi},
+                      {"z", z},
+                      {"u_x", solver.u(0)[k]},
+                      {"T", T},
+                      {"p", evaluate_closures_at(m, solver.Phi()[k], T, rcp, co).p}});
     }
     profiles.blank();
     profiles.blank();
@@ -111,8 +114,7 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
         table.at_most(tag + "(T_max - T_min)/T_max", r.T_spread, kSteadyTol);
         table.at_most(tag + "max |u - gamma_dot (z - H/2)|/U", r.linear_error, kSteadyTol);
         if (c.regime == std::string("yield")) {
-            scan.row({{"gamma_dot", c.gamma_dot}, {"T", r.T}, {"T_eq45", T_eq}, {"tau_over_p", r.tau_over_p},
-                       {"p_k", r.p_k}});
+            scan.row({{"gamma_dot", c.gamma_dot}, {"T", r.T}, {"T_eq45", T_eq}, {"tau_over_p", r.tau_over_p}, {"p_k", r.p_k}});
             lx[n] = std::log(c.gamma_dot), ly[n] = std::log(r.p_k), ++n;
         }
     }

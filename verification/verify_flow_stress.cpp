@@ -40,7 +40,7 @@ using granseg::verify::CheckTable;
 namespace {
 
 struct Outcome {
-    std::string error;          // InvariantError message, empty if the run completed
+    std::string error;  // InvariantError message, empty if the run completed
     double Phi_min = INFINITY, Phi_max = 0.0, T_min = INFINITY, mass_change = 0.0, dt_min = INFINITY;
     long steps = 0;
     bool finite = true;
@@ -106,7 +106,8 @@ void check_mode(CheckTable& table, const Material& m, const FlowSettings& s) {
     const std::string tag = verify::mode_tag(s.time_stepping);
     const double rcp = m.packing.Phi_rcp(s.phi_hat);
     // 1. Dam break: a block at Phi_rcp - 0.01 (p ~ 3 m^2/s^2) in the lower left quarter-box.
-    FlowSolver dam = boxes(m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0, rcp - 0.01, 9.81);
+    FlowSolver dam = boxes(
+        m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0, rcp - 0.01, 9.81);
     check_clean(table, tag + "dam break, 0.3 s", run(dam, 0.3), s.T_floor);
 
     // 2. and 3. Two blocks at Phi_co + 0.005 colliding in mid-air (no gravity, no wall contact:
@@ -126,8 +127,10 @@ void check_mode(CheckTable& table, const Material& m, const FlowSettings& s) {
     const Outcome v = run(fast, 0.01);
     const bool named = v.error.find("Phi_rcp") != std::string::npos || v.error.find("dt_min") != std::string::npos;
     const bool one_line = v.error.find('\n') == std::string::npos;
-    table.count(tag + "collision at 30 m/s: completed, or stopped naming the limit", v.error.empty() || (named && one_line) ? 1 : 0, 1);
-    table.note(tag + "collision at 30 m/s: " + (v.error.empty() ? std::string("completed, max Phi = ") + verify::format(v.Phi_max) : v.error));
+    table.count(tag + "collision at 30 m/s: completed, or stopped naming the limit",
+                v.error.empty() || (named && one_line) ? 1 : 0, 1);
+    table.note(tag + "collision at 30 m/s: " +
+               (v.error.empty() ? std::string("completed, max Phi = ") + verify::format(v.Phi_max) : v.error));
     table.count(tag + "collision at 30 m/s: non-finite values before it stopped", v.finite ? 0 : 1, 0);
     table.at_least(tag + "collision at 30 m/s: min Phi before it stopped", v.Phi_min, 0.0);
 
@@ -146,8 +149,8 @@ void check_mode(CheckTable& table, const Material& m, const FlowSettings& s) {
 
     // 5. A loose heap sloping at 40 deg (above the friction angle) collapsing against the wall:
     // the cells at its top corner drain into the falling ones below them.
-    FlowSolver heap = boxes(m, s, [](double x, double z) { return z < 0.005 + std::tan(40.0 * M_PI / 180.0) * x ? 1 : 0; },
-                            0.0, loose, 9.81);
+    FlowSolver heap = boxes(
+        m, s, [](double x, double z) { return z < 0.005 + std::tan(40.0 * M_PI / 180.0) * x ? 1 : 0; }, 0.0, loose, 9.81);
     check_clean(table, tag + "heap at 40 deg collapsing, 0.5 s", run(heap, 0.5), s.T_floor);
 }
 
@@ -161,8 +164,9 @@ void at_the_bound(CheckTable& table, const Material& m) {
         s.time_stepping = TimeStepping::semi_implicit;
         s.cfl = cfl;
         s.dt_max = 0.01;
-        FlowSolver dam = boxes(m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0,
-                               m.packing.Phi_rcp(s.phi_hat) - 0.01, 9.81);
+        FlowSolver dam = boxes(
+            m, s, [](double x, double z) { return x < 0.02 && z < 0.03 ? 1 : 0; }, 0.0, m.packing.Phi_rcp(s.phi_hat) - 0.01,
+            9.81);
         const Outcome o = run(dam, 0.3);
         const std::string tag = verify::mode_tag(s.time_stepping) + "dam break at cfl = " + verify::format(cfl) +
                                 (cfl > 1.0 ? " (above the bound)" : " (the bound)") + ", 0.3 s";
@@ -184,8 +188,8 @@ void dust_in_drum(CheckTable& table, const Material& m) {
     Frame f;
     f.omega = 0.2 * M_PI;
     FlowSolver drum(g, m, s, f);
-    std::vector<double> Phi = lithostatic_bed(g, m, 0.0, f.gravity, s.T_floor, m.packing.Phi_rcp(s.phi_hat),
-                                              m.packing.Phi_co(s.phi_hat));
+    std::vector<double> Phi =
+        lithostatic_bed(g, m, 0.0, f.gravity, s.T_floor, m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat));
     // Above the bed: a haze just below Phi_vacuum (empty cells) and in it single dust cells on every
     // fourth cell of every fourth row, from 1e-4 down to just above Phi_vacuum.
     int n = 0;

@@ -37,22 +37,21 @@ using granseg::verify::ProgramOptions;
 namespace {
 
 constexpr double kOmega = 2.0 * M_PI * 0.1, kRadius = 0.05;
-constexpr double kAngleMargin = 1.0;      // degrees, see above
-constexpr double kRollingRange = 1e-2;    // min/max kinetic energy after the first avalanche
-constexpr double kFirstAvalanche = 3.0;   // s, the first avalanche is over (at ~1.3 s)
-constexpr double kCoreDepth = 0.05;       // m below the free surface
-constexpr double kCoreShare = 0.1;        // of the top centimetre's speed
+constexpr double kAngleMargin = 1.0;     // degrees, see above
+constexpr double kRollingRange = 1e-2;   // min/max kinetic energy after the first avalanche
+constexpr double kFirstAvalanche = 3.0;  // s, the first avalanche is over (at ~1.3 s)
+constexpr double kCoreDepth = 0.05;      // m below the free surface
+constexpr double kCoreShare = 0.1;       // of the top centimetre's speed
 
 /// Runs the 32-cell drum for 25 s in `mode` through its scene file into dir (the figure reads the
 /// explicit run's files).
 void run_drum(const std::string& dir, TimeStepping mode) {
-    const std::string scene = "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 32\n"
-                              "[run]\nt_end = 25\nangle_from = 10\nvtk = false\n[flow]\ntime_stepping = \"" +
-                              choice_name(kTimeSteppings, mode) + "\"\n";
+    const std::string scene =
+        "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 32\n"
+        "[run]\nt_end = 25\nangle_from = 10\nvtk = false\n[flow]\ntime_stepping = \"" +
+        choice_name(kTimeSteppings, mode) + "\"\n";
     const std::string path = dir + ".toml";
-    {
-        std::ofstream(path) << scene;
-    }
+    { std::ofstream(path) << scene; }
     run_scene_file(path, dir);
 }
 
@@ -73,8 +72,7 @@ void check_mode(CheckTable& table, const ProgramOptions& options, const Material
     const auto history = verify::read_rows(dir + "/history.dat");
     const auto [mass_change, rolling] = mass_and_rolling(history);
     const double steps = history.back()[1];
-    table.at_most(tag + "relative mass change over " + verify::format(steps) + " steps", mass_change,
-                  steps * DBL_EPSILON);
+    table.at_most(tag + "relative mass change over " + verify::format(steps) + " steps", mass_change, steps * DBL_EPSILON);
     table.at_least(tag + "rolling: min / max kinetic energy after " + verify::format(kFirstAvalanche) + " s", rolling,
                    kRollingRange);
 
@@ -102,8 +100,8 @@ void check_mode(CheckTable& table, const ProgramOptions& options, const Material
     const auto summary = verify::read_rows(dir + "/summary.dat");  // t_end steps angle_mean angle_std samples mass_change
     const double friction = std::atan(m.shear_friction()) * 180.0 / M_PI;
     table.note(tag + "dynamic angle of repose " + verify::format(summary[0][2]) + " +- " + verify::format(summary[0][3]) +
-               " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " +
-               verify::format(friction) + " deg");
+               " deg (" + verify::format(summary[0][4]) + " samples over 10..25 s); friction angle " + verify::format(friction) +
+               " deg");
     table.at_least(tag + "dynamic angle of repose - friction angle (deg)", summary[0][2] - friction, -kAngleMargin);
 }
 

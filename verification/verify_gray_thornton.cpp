@@ -99,7 +99,10 @@ std::vector<double> averages(const Problem& p, double t, int N) {
 }
 
 Problem two_shock_problem() {
-    return {"two-shock batch (psi0 = 0.4, t = 0.6)", [](double t) { return homogeneous_batch(0.4, 1.0, t); }, 0.6, 1.0,
+    return {"two-shock batch (psi0 = 0.4, t = 0.6)",
+            [](double t) { return homogeneous_batch(0.4, 1.0, t); },
+            0.6,
+            1.0,
             {100, 200, 400, 800, 1600}};
 }
 
@@ -197,12 +200,10 @@ void check_faces_during_run(CheckTable& t) {
     solver.advance(column.fields, 0.6, phi, [&](double, double) {
         segregation_face_fluxes(column.grid, 2, column.fields, SegregationScheme::modified_godunov, phi, phi, phi, F_modified);
         segregation_face_fluxes(column.grid, 2, column.fields, SegregationScheme::classic_godunov, phi, phi, phi, F_classic);
-        for (std::size_t f = 0; f < F_modified.size(); ++f)
-            worst = std::max(worst, std::fabs(F_modified[f] - F_classic[f]));
+        for (std::size_t f = 0; f < F_modified.size(); ++f) worst = std::max(worst, std::fabs(F_modified[f] - F_classic[f]));
         faces += static_cast<long>(F_modified.size());
     });
-    t.at_most("every face and step (" + std::to_string(faces) + "): |F_modified - F_classic|", worst,
-              kFluxTolerance * kPhi / 4);
+    t.at_most("every face and step (" + std::to_string(faces) + "): |F_modified - F_classic|", worst, kFluxTolerance * kPhi / 4);
 }
 
 /// The split step treats every axis alike: the two-shock batch laid along x, y or z of a grid

@@ -33,9 +33,9 @@
 #include <random>
 
 using namespace granseg;
+using Eigen::Matrix3d, Eigen::Vector3d;
 using granseg::verify::CheckTable;
 using granseg::verify::kRoundOff;
-using Eigen::Matrix3d, Eigen::Vector3d;
 
 namespace {
 
@@ -64,7 +64,7 @@ constexpr double kSolidTol = kRoundOff;  // relative to Omega R
 constexpr double kSurfaceSpeedTol = 1e-9;  // relative to the middle surface speed
 // Stated bounds of the direction in the layer (docs/sect2.3_direction.md, section 6; the
 // continuous suprema, sampled on a 400 x 400 (s, chi) grid, are 11.4 and 13.0 degrees).
-constexpr double kCentralAngleBound = 12.0;    // deg, d_s vs surface normal, |s| <= L/2
+constexpr double kCentralAngleBound = 12.0;     // deg, d_s vs surface normal, |s| <= L/2
 constexpr double kStreamlineAngleBound = 15.0;  // deg, d_s vs streamline normal, |s| <= 0.8 L
 constexpr double kMedianAngleBound = 6.0;       // deg, median over the whole layer vs surface normal
 
@@ -75,9 +75,10 @@ void check_geometry(CheckTable& t, const RollingDrumFlow& flow, const RollingDru
     long bed = 0;
     for (std::size_t c = 0; c < f.grid.cells(); ++c) bed += f.grid.is_inside(c);
     const double cap = R * R * std::acos(d / R) - d * std::sqrt(R * R - d * d);  // the empty segment above the chord
-    t.note("geometry: R = " + verify::format(R) + " m, surface at d = " + verify::format(d) + " m, half chord L = " +
-           verify::format(flow.half_chord()) + " m, " + std::to_string(bed) + " bed cells");
-    t.near_relative("filled area (bed cells h^2) vs pi R^2 - segment", bed * f.grid.h[0] * f.grid.h[2], M_PI * R * R - cap, kAreaTol);
+    t.note("geometry: R = " + verify::format(R) + " m, surface at d = " + verify::format(d) +
+           " m, half chord L = " + verify::format(flow.half_chord()) + " m, " + std::to_string(bed) + " bed cells");
+    t.near_relative("filled area (bed cells h^2) vs pi R^2 - segment", bed * f.grid.h[0] * f.grid.h[2], M_PI * R * R - cap,
+                    kAreaTol);
 }
 
 void check_discrete_fluxes(CheckTable& t, const RollingDrumFields& f) {
@@ -190,8 +191,8 @@ void check_layer(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFi
         worst_speed = std::max(worst_speed, (flow.velocity(X(0), X(2)) - flow.surface_speed(s) * flow.tangent()).norm());
     }
     t.note("flowing layer: documented surface speed (Omega L^2/delta0) sqrt(1 - s^2/L^2) = " +
-           verify::format(flow.surface_speed(0)) + " m/s at the middle, shear rate Omega L^2/delta0^2 = " +
-           verify::format(flow.layer_shear_rate()) + " 1/s");
+           verify::format(flow.surface_speed(0)) +
+           " m/s at the middle, shear rate Omega L^2/delta0^2 = " + verify::format(flow.layer_shear_rate()) + " 1/s");
     t.at_most("surface velocity vs documented, |s| <= 0.95 L (rel.)", worst_speed / flow.surface_speed(0), kSurfaceSpeedTol);
 
     // Thickness at the middle: the deepest cell centre with non-zero shear within |s| < h.
@@ -211,33 +212,46 @@ void check_layer(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFi
     for (const double chi : {0.1, 0.5, 0.9}) {
         const Vector3d X = (d - chi * delta0) * flow.normal();
         const double psi_sb = Omega * (L * L + 2 * d * chi * delta0 - chi * chi * delta0 * delta0) / 2, m1 = 2 - 2 * chi;
-        const double expected = 2 * psi_sb / (delta0 * delta0) - 2 * m1 * Omega * (d - chi * delta0) / delta0 + psi_sb * m1 * chi / (L * L);
-        const double measured = segregation_direction(flow.relative_velocity_gradient(X(0), X(2)), Vector3d::UnitX()).principal_shear;
+        const double expected =
+            2 * psi_sb / (delta0 * delta0) - 2 * m1 * Omega * (d - chi * delta0) / delta0 + psi_sb * m1 * chi / (L * L);
+        const double measured =
+            segregation_direction(flow.relative_velocity_gradient(X(0), X(2)), Vector3d::UnitX()).principal_shear;
         worst_shear = std::max(worst_shear, std::fabs(measured / expected - 1));
-        if (chi == 0.5) t.note("  shear rate at s = 0, chi = 1/2: " + verify::format(measured) + " 1/s = " +
-                              verify::format(measured / flow.layer_shear_rate()) + " Omega L^2/delta0^2");
+        if (chi == 0.5)
+            t.note("  shear rate at s = 0, chi = 1/2: " + verify::format(measured) +
+                   " 1/s = " + verify::format(measured / flow.layer_shear_rate()) + " Omega L^2/delta0^2");
     }
     t.at_most("shear rate at s = 0, chi = 0.1, 0.5, 0.9 vs hand formula (rel.)", worst_shear, kRoundOff);
 }
 
 /// d_s in the layer, from the relative velocity and gradient of every layer cell; writes the cell data.
-void check_direction(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFields& f, const verify::ProgramOptions& options) {
+void check_direction(CheckTable& t, const RollingDrumFlow& flow, const RollingDrumFields& f,
+                     const verify::ProgramOptions& options) {
     const Grid& g = f.grid;
     const double L = flow.half_chord();
     std::vector<double> angles;
     double central = 0, streamline = 0;
     long not_ok = 0;
     DataTable cells;
-    cells.comment("bed cells of the kinematic drum (inertial frame, m and m/s); d_s signed upwards; angle: d_s vs surface normal");
+    cells.comment(
+        "bed cells of the kinematic drum (inertial frame, m and m/s); d_s signed upwards; angle: d_s vs surface normal");
     for_each_bed_cell(g, [&](const BedCell& b) {
         const std::size_t c = b.c;
         const Vector3d u = cell_vector(f.u, c), u_rel = cell_vector(f.u_rel, c);
         const SegregationDirection r = segregation_direction(cell_tensor(f.grad_rel, c), u_rel);
         const Vector3d d_s = r.d_s(2) < 0 ? Vector3d(-r.d_s) : r.d_s;
         const double angle = r.segregates() ? degrees(d_s.dot(flow.normal())) : 0.0;
-        cells.row({{"x", b.x}, {"z", b.z}, {"in_layer", double(f.in_layer[c])}, {"ux", u(0)}, {"uz", u(2)},
-                    {"urel_x", u_rel(0)}, {"urel_z", u_rel(2)}, {"ds_x", d_s(0)}, {"ds_z", d_s(2)},
-                    {"speed", u.norm()}, {"angle_deg", angle}});
+        cells.row({{"x", b.x},
+                   {"z", b.z},
+                   {"in_layer", double(f.in_layer[c])},
+                   {"ux", u(0)},
+                   {"uz", u(2)},
+                   {"urel_x", u_rel(0)},
+                   {"urel_z", u_rel(2)},
+                   {"ds_x", d_s(0)},
+                   {"ds_z", d_s(2)},
+                   {"speed", u.norm()},
+                   {"angle_deg", angle}});
         if (!f.in_layer[c]) return;
         not_ok += r.status != DirectionStatus::ok;
         angles.push_back(angle);

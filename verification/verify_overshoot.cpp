@@ -181,8 +181,7 @@ double interface_height(const std::function<double(double)>& Phi, double mass) {
     for (int i = 0; i < 200; ++i) {
         gsl_root_fsolver_iterate(solver);
         x = gsl_root_fsolver_root(solver);
-        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-15, 0) ==
-            GSL_SUCCESS)
+        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-15, 0) == GSL_SUCCESS)
             break;
     }
     gsl_root_fsolver_free(solver);
@@ -227,15 +226,16 @@ int main(int argc, char** argv) {
     write_profiles(options, every);
 
     // Steady state of the Fig. 6 column from phi0 = Phi/3: int_0^1 Phi/3 dz = 0.58/3.
-    check_steady_state(t, "Fig. 6 Phi and T, phi0 = Phi/3", fig6_setup(50), [](double z) { return Phi_fig6(z) / 3.0; },
-                       0.58 / 3.0, every);
+    check_steady_state(
+        t, "Fig. 6 Phi and T, phi0 = Phi/3", fig6_setup(50), [](double z) { return Phi_fig6(z) / 3.0; }, 0.58 / 3.0, every);
     // A jump in Phi inside the filled layer (at a face of both grids, so the midpoint rule of the
     // initial mass is exact) and a smooth T > 0; phi0 = 0.45 Phi: mass 0.45 int Phi.
     ColumnSetup jump = fig6_setup(50);
     jump.Phi = [](double z) { return z < 0.36 ? 0.5 : 0.6; };
     jump.T = [](double z) { return 0.1 + 0.9 * std::pow(std::sin(M_PI * z), 2); };
-    check_steady_state(t, "Phi jumps 0.5 -> 0.6 at z = 0.36, phi0 = 0.45 Phi", jump,
-                       [&](double z) { return 0.45 * jump.Phi(z); }, 0.45 * (0.36 * 0.5 + 0.64 * 0.6), every);
+    check_steady_state(
+        t, "Phi jumps 0.5 -> 0.6 at z = 0.36, phi0 = 0.45 Phi", jump, [&](double z) { return 0.45 * jump.Phi(z); },
+        0.45 * (0.36 * 0.5 + 0.64 * 0.6), every);
 
     t.note("every run of this program (" + std::to_string(every.runs) + " runs):");
     t.at_most("every run: max relative change of sum(phi)", every.mass, kMassTolerance);

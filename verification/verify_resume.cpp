@@ -25,8 +25,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string>
 
@@ -44,7 +44,8 @@ std::string drum(double t_end, int frames, const std::string& more = "") {
 
 class Runs {
 public:
-    Runs(const char* argv0, fs::path work) : cli_(Cli::beside(argv0), work), work_(std::move(work)), random_(std::random_device{}()) {}
+    Runs(const char* argv0, fs::path work)
+        : cli_(Cli::beside(argv0), work), work_(std::move(work)), random_(std::random_device{}()) {}
 
     std::string scene(const std::string& name, const std::string& text) const {
         const fs::path p = work_ / (name + ".toml");
@@ -92,8 +93,8 @@ void killed_and_resumed(CheckTable& t, Runs& runs, const std::string& label, con
     const double target = runs.uniform(0.05, 0.7) * t_end, delay = runs.uniform(0.0, 0.02);
     const auto reached = [&] { return checkpoint_time(out + "/checkpoint.gsc") >= target; };
     const Outcome o = runs.run(scene, out, "", "", delay, signal, reached);
-    t.note(label + " " + format(delay) + " s after a checkpoint at t >= " + format(target) + " s: " +
-           (o.err.empty() ? "no message" : o.err.substr(0, o.err.find('\n'))));
+    t.note(label + " " + format(delay) + " s after a checkpoint at t >= " + format(target) +
+           " s: " + (o.err.empty() ? "no message" : o.err.substr(0, o.err.find('\n'))));
     t.count(label + ": killed run's exit status", o.status, 128 + signal);
     long left = 0;  // but the checkpoint and a temporary file of one being written
     for (const auto& e : fs::directory_iterator(out)) left += e.path().filename().string().rfind("checkpoint.gsc", 0) != 0;
@@ -121,7 +122,8 @@ void refused(CheckTable& t, Runs& runs, const std::string& label, const std::str
 }
 
 /// A copy of the checkpoint of `from` into a new directory `name`, changed by `change`; its path.
-std::string altered(Runs& runs, const std::string& from, const std::string& name, const std::function<void(std::string&)>& change) {
+std::string altered(Runs& runs, const std::string& from, const std::string& name,
+                    const std::function<void(std::string&)>& change) {
     std::ifstream in(from + "/checkpoint.gsc", std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     change(bytes);
@@ -140,16 +142,20 @@ void check_refusals(CheckTable& t, Runs& runs, const std::string& scene, const s
     d = altered(runs, flow_run, "other_kind", [](std::string&) {});
     refused(t, runs, "a tumbler-flow's checkpoint", scene, d, path(d) + "a checkpoint of a tumbler-flow run");
     d = altered(runs, whole, "other_scene", [](std::string&) {});
-    refused(t, runs, "another scene ([drum] rps)", runs.scene("rps", drum(0.6, 3, "rps = 0.2\n")), d, path(d) + "written for a scene with");
+    refused(t, runs, "another scene ([drum] rps)", runs.scene("rps", drum(0.6, 3, "rps = 0.2\n")), d,
+            path(d) + "written for a scene with");
     d = altered(runs, whole, "other_build", [](std::string&) {});
     Checkpoint c = read_checkpoint(d + "/checkpoint.gsc");
     c.program = "0123456789abcdef";
     write_checkpoint(d + "/checkpoint.gsc", c);
     refused(t, runs, "another build", scene, d, path(d) + "written by another build");
     d = altered(runs, whole, "past_t_end", [](std::string&) {});
-    refused(t, runs, "t_end before the checkpoint's time", runs.scene("earlier", drum(0.3, 3)), d, path(d) + "its state is at t = ");
-    const std::string source = runs.scene("from_coarser", "[scene]\nkind = \"tumbler\"\n[drum]\ncells_per_diameter = 30\n[run]\nt_end = 0.6\n"
-                                                          "angle_from = 0.2\n[initial]\nflow = \"" + flow_run + "/checkpoint.gsc\"\n");
+    refused(t, runs, "t_end before the checkpoint's time", runs.scene("earlier", drum(0.3, 3)), d,
+            path(d) + "its state is at t = ");
+    const std::string source = runs.scene("from_coarser",
+                                          "[scene]\nkind = \"tumbler\"\n[drum]\ncells_per_diameter = 30\n[run]\nt_end = 0.6\n"
+                                          "angle_from = 0.2\n[initial]\nflow = \"" +
+                                              flow_run + "/checkpoint.gsc\"\n");
     refused(t, runs, "[initial] flow of another drum", source, runs.dir("from_coarser"), source + ": [initial] flow: ", "");
 }
 
@@ -159,7 +165,8 @@ void check_full_disk(CheckTable& t, Runs& runs, const std::string& scene, const 
     const long final_size = static_cast<long>(fs::file_size(whole + "/checkpoint.gsc"));
     const std::string out = runs.dir("full_disk");
     const long blocks = final_size * 3 / 4 / 512;  // ulimit -f counts blocks of 512 bytes in sh
-    const Outcome o = runs.run(scene, out, "", "sh -c 'trap \"\" XFSZ; ulimit -f " + std::to_string(blocks) + "; exec \"$0\" \"$@\"'");
+    const Outcome o =
+        runs.run(scene, out, "", "sh -c 'trap \"\" XFSZ; ulimit -f " + std::to_string(blocks) + "; exec \"$0\" \"$@\"'");
     t.note("  " + o.err.substr(0, o.err.find('\n')));
     t.count("full disk: exit status", o.status, 0);
     t.count("full disk: the message says the previous checkpoint is kept",
@@ -194,10 +201,14 @@ int main(int argc, char** argv) {
 
     t.note("Started from another run: a tumbler on the flow of a tumbler-flow run at its t_end");
     const std::string flow_run = runs.dir("flow");
-    runs.run(runs.scene("flow", "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.3\nangle_from = 0.1\n"), flow_run);
+    runs.run(
+        runs.scene("flow",
+                   "[scene]\nkind = \"tumbler-flow\"\n[drum]\ncells_per_diameter = 26\n[run]\nt_end = 0.3\nangle_from = 0.1\n"),
+        flow_run);
     const Checkpoint source = read_checkpoint(flow_run + "/checkpoint.gsc");
     const std::string from = runs.dir("from");
-    const Outcome f = runs.run(runs.scene("from", drum(0.5, 0, "") + "[initial]\nflow = \"" + flow_run + "/checkpoint.gsc\"\n"), from);
+    const Outcome f =
+        runs.run(runs.scene("from", drum(0.5, 0, "") + "[initial]\nflow = \"" + flow_run + "/checkpoint.gsc\"\n"), from);
     t.count("from a flow: exit status", f.status, 0);
     const auto first = read_rows(from + "/history.dat").front();
     // history.dat prints 12 significant digits.

@@ -44,8 +44,8 @@ constexpr double kRemixOrderFirst = 0.9;
 constexpr double kRemixOrderSecond = 1.8;
 constexpr double kMassTolerance = 1e-13;  // as in verify_overshoot
 
-constexpr double kPhi = 0.6;  // constant Phi: psi = phi/Phi obeys the Gray-Thornton equation
-constexpr double kAmplitude = 0.2, kSmoothEnd = 0.25;  // breaking time 1/(4 pi 0.2) = 0.40
+constexpr double kPhi = 0.6;                                    // constant Phi: psi = phi/Phi obeys the Gray-Thornton equation
+constexpr double kAmplitude = 0.2, kSmoothEnd = 0.25;           // breaking time 1/(4 pi 0.2) = 0.40
 constexpr double kPeclet = 10.0, kPsi0 = 0.3, kRemixEnd = 5.0;  // D = q/P = 0.1; steady by t = 5
 
 const std::vector<SegregationScheme> kOrders = {SegregationScheme::modified_godunov, SegregationScheme::modified_godunov_2};
@@ -100,8 +100,8 @@ void print_series(CheckTable& t, const std::vector<int>& cells, const Series& fi
     t.note("      N   L1 first order  (updates)   L1 second order  (updates)");
     for (std::size_t i = 0; i < cells.size(); ++i) {
         char line[160];
-        std::snprintf(line, sizeof line, "%7d  %14.4e  %10lld  %15.4e  %10lld", cells[i], first.error[i],
-                      first.updates[i], second.error[i], second.updates[i]);
+        std::snprintf(line, sizeof line, "%7d  %14.4e  %10lld  %15.4e  %10lld", cells[i], first.error[i], first.updates[i],
+                      second.error[i], second.updates[i]);
         t.note(line);
     }
 }
@@ -131,9 +131,12 @@ void check_second_order(CheckTable& t, DataTable& table, Totals& totals) {
     print_series(t, cells, first, second);
     t.count("smooth: N where 2nd order at N is not better than 1st at 2N", not_cheaper(first, second), 0);
     for (std::size_t i = 0; i < cells.size(); ++i)
-        table.row({{"problem", 0}, {"N", static_cast<double>(cells[i])}, {"L1_first", first.error[i]},
-                    {"updates_first", static_cast<double>(first.updates[i])}, {"L1_second", second.error[i]},
-                    {"updates_second", static_cast<double>(second.updates[i])}});
+        table.row({{"problem", 0},
+                   {"N", static_cast<double>(cells[i])},
+                   {"L1_first", first.error[i]},
+                   {"updates_first", static_cast<double>(first.updates[i])},
+                   {"L1_second", second.error[i]},
+                   {"updates_second", static_cast<double>(second.updates[i])}});
 
     const std::vector<int> batch = {200, 400, 800, 1600};
     const auto graded = [](double t) {
@@ -155,12 +158,18 @@ void check_second_order(CheckTable& t, DataTable& table, Totals& totals) {
     t.note("two-shock batch, psi0 = 0.4, t = 0.6 (reported only: shocks are O(h) for both orders):");
     print_series(t, batch, s1, s2);
     for (std::size_t i = 0; i < batch.size(); ++i) {
-        table.row({{"problem", 1}, {"N", static_cast<double>(batch[i])}, {"L1_first", g1.error[i]},
-                    {"updates_first", static_cast<double>(g1.updates[i])}, {"L1_second", g2.error[i]},
-                    {"updates_second", static_cast<double>(g2.updates[i])}});
-        table.row({{"problem", 2}, {"N", static_cast<double>(batch[i])}, {"L1_first", s1.error[i]},
-                    {"updates_first", static_cast<double>(s1.updates[i])}, {"L1_second", s2.error[i]},
-                    {"updates_second", static_cast<double>(s2.updates[i])}});
+        table.row({{"problem", 1},
+                   {"N", static_cast<double>(batch[i])},
+                   {"L1_first", g1.error[i]},
+                   {"updates_first", static_cast<double>(g1.updates[i])},
+                   {"L1_second", g2.error[i]},
+                   {"updates_second", static_cast<double>(g2.updates[i])}});
+        table.row({{"problem", 2},
+                   {"N", static_cast<double>(batch[i])},
+                   {"L1_first", s1.error[i]},
+                   {"updates_first", static_cast<double>(s1.updates[i])},
+                   {"L1_second", s2.error[i]},
+                   {"updates_second", static_cast<double>(s2.updates[i])}});
     }
 }
 
@@ -176,9 +185,12 @@ void check_remixing(CheckTable& t, const ProgramOptions& options, DataTable& tab
     t.at_least("remixing: modified-godunov, fitted order", fitted_order(cells, first.error), kRemixOrderFirst);
     t.at_least("remixing: modified-godunov-2, fitted order", fitted_order(cells, second.error), kRemixOrderSecond);
     for (std::size_t i = 0; i < cells.size(); ++i)
-        table.row({{"problem", 3}, {"N", static_cast<double>(cells[i])}, {"L1_first", first.error[i]},
-                    {"updates_first", static_cast<double>(first.updates[i])}, {"L1_second", second.error[i]},
-                    {"updates_second", static_cast<double>(second.updates[i])}});
+        table.row({{"problem", 3},
+                   {"N", static_cast<double>(cells[i])},
+                   {"L1_first", first.error[i]},
+                   {"updates_first", static_cast<double>(first.updates[i])},
+                   {"L1_second", second.error[i]},
+                   {"updates_second", static_cast<double>(second.updates[i])}});
 
     DataTable profiles;
     profiles.comment("remixing steady state, P = 10, psi0 = 0.3, Phi = 0.6, N = 50, t = 5");
@@ -186,8 +198,9 @@ void check_remixing(CheckTable& t, const ProgramOptions& options, DataTable& tab
     const ColumnRun r1 = run_column(column, uniform(50), scheme_options(kOrders[0]), kRemixEnd);
     const ColumnRun r2 = run_column(column, uniform(50), scheme_options(kOrders[1]), kRemixEnd);
     const std::vector<double> exact = logistic(50);
-    for (int k = 0; k < 50; ++k) profiles.row({{"z", column.z[k]}, {"exact", exact[k]},
-                                                {"modified_godunov", r1.phi[k]}, {"modified_godunov_2", r2.phi[k]}});
+    for (int k = 0; k < 50; ++k)
+        profiles.row(
+            {{"z", column.z[k]}, {"exact", exact[k]}, {"modified_godunov", r1.phi[k]}, {"modified_godunov_2", r2.phi[k]}});
     write_data(options, "remixing_profiles.dat", profiles);
 }
 

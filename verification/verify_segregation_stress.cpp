@@ -62,8 +62,7 @@ struct Tally {
     /// Records the change of the sum of phi over a run against its round-off bound.
     void mass(double before, double after, double Phi_max, long long run_updates) {
         worst_mass = std::max(worst_mass, std::fabs(after - before) / before);
-        if (!(std::fabs(after - before) <= kUpdateRoundOff * Phi_max * static_cast<double>(run_updates)))
-            ++mass_beyond_round_off;
+        if (!(std::fabs(after - before) <= kUpdateRoundOff * Phi_max * static_cast<double>(run_updates))) ++mass_beyond_round_off;
     }
     /// violation: max(-phi, phi - Phi) over a run, as the solver left phi; correction: the
     /// largest clip its round-off guard made (what the scheme itself produced before the clip).
@@ -111,8 +110,10 @@ private:
 Profile random_Phi(Random& r, int cells) {
     const double lo = r.log_uniform(1e-3, 0.3), hi = r.uniform(lo, 0.99);
     switch (r.integer(0, 3)) {
-        case 0: return r.smooth(lo, hi);
-        case 1: return r.steps(lo, hi, r.integer(1, 12));
+        case 0:
+            return r.smooth(lo, hi);
+        case 1:
+            return r.steps(lo, hi, r.integer(1, 12));
         case 2: {  // alternating from cell to cell: the sharpest jumps a grid can hold
             const int n = cells;
             return [=](double z) { return static_cast<int>(z * n) % 2 ? 1e-3 : 0.99; };
@@ -220,8 +221,8 @@ void stress_drums(Random& r, Tally& tally) {
         const FaceFields rotation_M =
             stream_function_mass_fluxes(grid, [&](double x, double z) { return 0.5 * Phi_const * Omega * (x * x + z * z); });
         const double cfl = r.chance(0.25) ? 1.0 : r.uniform(0.3, 1.0);
-        SegregationSolver solver(grid, scheme_options(run % 4 < 2 ? SegregationScheme::modified_godunov
-                                                                  : SegregationScheme::modified_godunov_2, cfl));
+        SegregationSolver solver(
+            grid, scheme_options(run % 4 < 2 ? SegregationScheme::modified_godunov : SegregationScheme::modified_godunov_2, cfl));
         std::vector<double> phi = random_phi(r, Phi);
         const double mass0 = total_amount(grid, phi);
         double violation = 0.0;
@@ -280,9 +281,8 @@ int main(int argc, char** argv) {
         t.count(name + ": runs whose scheme left [0, Phi] beyond round-off", tally.beyond_round_off, 0);
         t.count(name + ": runs with |change of sum(phi)| above round-off", tally.mass_beyond_round_off, 0);
     }
-    t.at_least("1-D columns: share of runs in which phi changed", static_cast<double>(columns.moved) / columns.runs,
-               kMovedShare);
-    t.note("tried " + std::to_string(columns.runs + drums.runs) + " runs and " +
-           std::to_string(columns.updates + drums.updates) + " cell updates (seed " + std::to_string(kSeed) + ")");
+    t.at_least("1-D columns: share of runs in which phi changed", static_cast<double>(columns.moved) / columns.runs, kMovedShare);
+    t.note("tried " + std::to_string(columns.runs + drums.runs) + " runs and " + std::to_string(columns.updates + drums.updates) +
+           " cell updates (seed " + std::to_string(kSeed) + ")");
     return t.finish();
 }

@@ -46,7 +46,7 @@ constexpr double kFluxTol = 2 * kRoundOff;
 int literal_table1_rows(const FluxSide& L, const FluxSide& R) {
     const double fL = flux_of(L), fR = flux_of(R), f_star = -0.25 * L.a * L.Phi;  // f(Q*)
     const double Phi_tilde = 4.0 * L.phi * (L.Phi - L.phi) / L.Phi;
-    const bool L_left = L.phi < L.Phi / 2, R_left = R.phi < R.Phi / 2, R_right = R.phi > R.Phi / 2;
+    const bool L_left = L.phi < L.Phi / 2, R_left = R.phi<R.Phi / 2, R_right = R.phi> R.Phi / 2;
     const bool rows[10] = {
         L_left && R_left && fR > fL,
         L_left && R_left && f_star <= fR && fR < fL,
@@ -109,8 +109,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
                 wrong_pattern, 0);
     }
     t.count(std::string(family_tag(family)) + " states not found inside their region", missing_states, 0);
-    if (family == Family::unequal_T)
-        t.count("T!= states with crossing flux curves (3 per case)", crossing_states, 3 * 10);
+    if (family == Family::unequal_T) t.count("T!= states with crossing flux curves (3 per case)", crossing_states, 3 * 10);
     t.note("  " + std::to_string(all.solutions) + " exact solutions checked");
     t.at_most(std::string(family_tag(family)) + " Rankine-Hugoniot residual, max", all.rankine_hugoniot, kFluxTol);
     t.count(std::string(family_tag(family)) + " shocks violating Lax", all.lax, 0);
@@ -128,6 +127,7 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_over_families(argc, argv, "Table 1: exact Riemann solutions of system (52), case by case, four coefficient families",
-                             20200045, check_family);
+    return run_over_families(argc, argv,
+                             "Table 1: exact Riemann solutions of system (52), case by case, four coefficient families", 20200045,
+                             check_family);
 }

@@ -95,8 +95,8 @@ void check_figure3(CheckTable& t, const ProgramOptions& options) {
 
 /// Fig. 4: the case of every Q_R of a grid, and a label position inside each region (the grid
 /// point farthest, in grid steps, from the region's boundary).
-void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide& L, const std::string& name,
-                   int first_case, int last_case) {
+void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide& L, const std::string& name, int first_case,
+                   int last_case) {
     std::vector<int> cell(kGrid * kGrid, 0);
     std::vector<long> hits(11, 0);
     double worst = 0.0;
@@ -124,10 +124,11 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
     t.at_most(name + ": |exact flux - eq. (63)| on the grid", worst, kRoundOff);
 
     DataTable regions;
-    regions.comment(name + ": Q_L = (" + std::to_string(L.phi) + ", " + std::to_string(L.Phi) + "), S = T = 1; case 0: phi > Phi");
+    regions.comment(name + ": Q_L = (" + std::to_string(L.phi) + ", " + std::to_string(L.Phi) +
+                    "), S = T = 1; case 0: phi > Phi");
     for (int j = 0; j < kGrid; ++j) {
-        for (int i = 0; i < kGrid; ++i) regions.row({{"phi_R", phi_at(i)}, {"Phi_R", phi_at(j)},
-                                                      {"case", static_cast<double>(cell[j * kGrid + i])}});
+        for (int i = 0; i < kGrid; ++i)
+            regions.row({{"phi_R", phi_at(i)}, {"Phi_R", phi_at(j)}, {"case", static_cast<double>(cell[j * kGrid + i])}});
         regions.blank();
     }
     write_data(options, name + "_regions.dat", regions);
@@ -153,8 +154,8 @@ void check_figure4(CheckTable& t, const ProgramOptions& options, const FluxSide&
         int best = -1;
         for (int k = 0; k < kGrid * kGrid; ++k)
             if (cell[k] == c && (best < 0 || depth[k] > depth[best])) best = k;
-        if (best >= 0) labels.row({{"phi_R", phi_at(best % kGrid)}, {"Phi_R", phi_at(best / kGrid)},
-                                    {"case", static_cast<double>(c)}});
+        if (best >= 0)
+            labels.row({{"phi_R", phi_at(best % kGrid)}, {"Phi_R", phi_at(best / kGrid)}, {"case", static_cast<double>(c)}});
     }
     write_data(options, name + "_labels.dat", labels);
 }
@@ -169,8 +170,7 @@ void check_figure5(CheckTable& t, const ProgramOptions& options) {
     t.at_least("Fig. 5: shock speed s (caption: > 0)", s.waves.back().speed_left, 0.1);
     t.near("Fig. 5: interface flux = f_L^min = -Phi_L/4", s.flux, -0.25 * L.Phi, kRoundOff);
     t.count("Fig. 5: violated properties of the exact solution",
-            e.lax + e.gamma_crossings + e.chain + e.fan_order + (e.rankine_hugoniot > kRoundOff) + (e.mass_flux > kRoundOff),
-            0);
+            e.lax + e.gamma_crossings + e.chain + e.fan_order + (e.rankine_hugoniot > kRoundOff) + (e.mass_flux > kRoundOff), 0);
 
     const double phi_check = s.phi_plus;  // Q-check_R: the right end of the standing wave
     DataTable states;
@@ -180,7 +180,8 @@ void check_figure5(CheckTable& t, const ProgramOptions& options) {
     write_data(options, "fig5_states.dat", states);
 
     DataTable path;
-    path.comment("Fig. 5 wave path: block 0 rarefaction (Phi = Phi_L), block 1 standing wave (f = F), block 2 shock (Phi = Phi_R)");
+    path.comment(
+        "Fig. 5 wave path: block 0 rarefaction (Phi = Phi_L), block 1 standing wave (f = F), block 2 shock (Phi = Phi_R)");
     for (int k = 0; k <= 50; ++k) {
         const double phi = L.phi + (0.5 * L.Phi - L.phi) * k / 50.0;
         path.row({{"phi", phi}, {"Phi", L.Phi}, {"f", segregation_flux(phi, L.Phi, 1.0)}});
@@ -198,8 +199,9 @@ void check_figure5(CheckTable& t, const ProgramOptions& options) {
     curves.comment("Fig. 5b: the flux curves f_L = f(.; Phi_L) on [0, Phi_L] and f_R on [0, Phi_R] (f_L = nan beyond Phi_L)");
     for (int k = 0; k <= 400; ++k) {
         const double phi = R.Phi * k / 400.0;
-        curves.row({{"phi", phi}, {"f_L", phi <= L.Phi ? segregation_flux(phi, L.Phi, 1.0) : NAN},
-                     {"f_R", segregation_flux(phi, R.Phi, 1.0)}});
+        curves.row({{"phi", phi},
+                    {"f_L", phi <= L.Phi ? segregation_flux(phi, L.Phi, 1.0) : NAN},
+                    {"f_R", segregation_flux(phi, R.Phi, 1.0)}});
     }
     write_data(options, "fig5_flux_curves.dat", curves);
 

@@ -92,7 +92,7 @@ struct Ramped {
 };
 
 struct OracleRun {
-    double flux = 0.0;                  // time average over [t_end/2, t_end] through z = 0
+    double flux = 0.0;  // time average over [t_end/2, t_end] through z = 0
     double t_end = 0.0;
     double z_left = 0.0, z_right = 0.0;  // cell centres just outside the ramps
     double phi_left = 0.0, phi_right = 0.0;
@@ -110,7 +110,8 @@ OracleRun solve_ramped(const Ramped& p) {
         phi[i] = (z < 0.0 ? p.L.phi / p.L.Phi : p.R.phi / p.R.Phi) * p.Phi(z);
     }
     OracleRun r;
-    const int i_left = N + static_cast<int>(std::floor(ramp_lo / h)) - 3, i_right = N + static_cast<int>(std::ceil(ramp_hi / h)) + 2;
+    const int i_left = N + static_cast<int>(std::floor(ramp_lo / h)) - 3,
+              i_right = N + static_cast<int>(std::ceil(ramp_hi / h)) + 2;
     r.z_left = (i_left - N + 0.5) * h;
     r.z_right = (i_right - N + 0.5) * h;
     if (a_max == 0.0) {  // nothing moves, the flux vanishes identically
@@ -122,8 +123,7 @@ OracleRun solve_ramped(const Ramped& p) {
     while (t < r.t_end) {
         double speed = a_max;  // max |f'| over the faces, for the states on both sides
         for (int j = 1; j < 2 * N; ++j)
-            for (double u : {phi[j - 1], phi[j]})
-                speed = std::max(speed, std::fabs(a_face[j] * (2.0 * u / Phi_face[j] - 1.0)));
+            for (double u : {phi[j - 1], phi[j]}) speed = std::max(speed, std::fabs(a_face[j] * (2.0 * u / Phi_face[j] - 1.0)));
         const double dt = std::min(kCfl * h / speed, r.t_end - t);
         for (int j = 1; j < 2 * N; ++j) F[j] = engquist_osher(phi[j - 1], phi[j], Phi_face[j], a_face[j]);
         F[0] = engquist_osher(phi[0], phi[0], Phi_face[0], a_face[0]);  // zero-gradient ends, never reached
@@ -153,7 +153,8 @@ Convergence converge(const FluxSide& L, const FluxSide& R) {
         double error = 0.0, excess = 0.0;
         for (const auto& [z, phi] : {std::make_pair(r.z_left, r.phi_left), std::make_pair(r.z_right, r.phi_right)}) {
             const double xi = r.t_end > 0.0 ? z / r.t_end : (z < 0.0 ? -1.0 : 1.0), d = 1e-7;
-            const double slope = r.t_end > 0.0 ? std::fabs(sample_phi(exact, xi + d) - sample_phi(exact, xi - d)) / (2 * d * r.t_end) : 0.0;
+            const double slope =
+                r.t_end > 0.0 ? std::fabs(sample_phi(exact, xi + d) - sample_phi(exact, xi - d)) / (2 * d * r.t_end) : 0.0;
             const double e = std::fabs(phi - sample_phi(exact, xi));
             error = std::max(error, e);
             excess = std::max(excess, e - (0.5 * w + kTraceCells * h) * slope);
@@ -201,8 +202,8 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
             }
             const auto& [L, R] = q;
             const Convergence c = converge(L, R);
-            t.note("  " + group_name(family, group) + (crossing ? " (curves cross)" : "") + "  |F_ramp - F|:" +
-                   series(c.flux_error));
+            t.note("  " + group_name(family, group) + (crossing ? " (curves cross)" : "") +
+                   "  |F_ramp - F|:" + series(c.flux_error));
             t.note("      profile next to the ramp:" + series(c.trace_error));
             worst = std::max(worst, c.flux_error.back());
             scale = std::max({scale, std::fabs(L.a), std::fabs(R.a)});

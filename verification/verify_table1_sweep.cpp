@@ -39,9 +39,9 @@ using namespace granseg::verify;
 
 namespace {
 
-constexpr long kPairs = 100000;      // item 4c: at least 10^5 states per family
-constexpr long kSegments = 20000;    // random segments searched for case boundaries
-constexpr int kBisections = 52;      // |ds| = 2^-52 at the located boundary
+constexpr long kPairs = 100000;    // item 4c: at least 10^5 states per family
+constexpr long kSegments = 20000;  // random segments searched for case boundaries
+constexpr int kBisections = 52;    // |ds| = 2^-52 at the located boundary
 // Fluxes are O(|a|) <= 2: round-off, kRoundOff per unit of |a|.
 constexpr double kFluxTol = 2 * kRoundOff;
 // |F| is Lipschitz in the states: |dF| <= max|a| (|dphi| + |dPhi|) + |da|/4 (|df/dphi|,
@@ -109,8 +109,8 @@ SweepResult sweep(Family family, StateSampler& sampler) {
         ++r.hits[group_of(family, L, R)];
         for (const FluxSide& q : {L, R}) {
             const double f = flux_of(q);
-            r.consistency = std::max({r.consistency, std::fabs(modified_godunov_flux({q, q}) - f),
-                                      std::fabs(solve_riemann(q, q).flux - f)});
+            r.consistency =
+                std::max({r.consistency, std::fabs(modified_godunov_flux({q, q}) - f), std::fabs(solve_riemann(q, q).flux - f)});
         }
         r.reflection = std::max(r.reflection, std::fabs(F + modified_godunov_flux({mirror(R), mirror(L)})));
 
@@ -121,8 +121,8 @@ SweepResult sweep(Family family, StateSampler& sampler) {
             row.bounds += outside(one_step(L, R, X, cfl, rows[k]), R.Phi);
             for (const FluxSide& q : {L, R})
                 row.consistency = std::max(row.consistency, std::fabs(row_flux(rows[k], q, q) - flux_of(q)));
-            row.reflection = std::max(row.reflection,
-                                      std::fabs(row_flux(rows[k], L, R) + row_flux(rows[k], mirror(R), mirror(L))));
+            row.reflection =
+                std::max(row.reflection, std::fabs(row_flux(rows[k], L, R) + row_flux(rows[k], mirror(R), mirror(L))));
         }
     }
     return r;
@@ -180,17 +180,17 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
     std::string counts = " ";
     long not_hit = 0;
     for (int g = 1; g <= group_count(family); ++g) {
-        counts += " " + (family == Family::mixed ? std::string(mixed_kind_name(g - 1)) + ":"
-                                                 : std::string(1, kTable1[g - 1].region) + ":") +
-                  std::to_string(r.hits[g]);
+        counts +=
+            " " +
+            (family == Family::mixed ? std::string(mixed_kind_name(g - 1)) + ":" : std::string(1, kTable1[g - 1].region) + ":") +
+            std::to_string(r.hits[g]);
         not_hit += r.hits[g] == 0;
     }
     t.note("  pairs per " + std::string(family == Family::mixed ? "sign class" : "region") + ":" + counts);
     t.count(tag + " cases (sign classes) not hit", not_hit, 0);
     t.at_most(tag + " |F of the exact solution - eq. (63)|, max", r.exact.eq63, kFluxTol);
     t.at_most(tag + " |F from mass balance - eq. (63)|, max", r.exact.mass_flux, 10 * kFluxTol);
-    t.at_most(tag + " RH and standing-wave residuals, max", std::max(r.exact.rankine_hugoniot, r.exact.standing),
-              kFluxTol);
+    t.at_most(tag + " RH and standing-wave residuals, max", std::max(r.exact.rankine_hugoniot, r.exact.standing), kFluxTol);
     t.count(tag + " Lax, Gamma-crossing, fan and wave-chain violations",
             r.exact.lax + r.exact.gamma_crossings + r.exact.chain + r.exact.fan_order, 0);
     t.at_most(tag + " consistency |F(u, u) - f(u)|, max", r.consistency, kFluxTol);
@@ -209,8 +209,8 @@ void check_family(CheckTable& t, Family family, StateSampler& sampler) {
     t.note("  eq. (64) steps leaving 0 <= phi <= Phi, of " + std::to_string(kPairs) + ":" + violations);
 
     const Boundaries b = locate_boundaries(family, sampler);
-    t.note("  " + std::to_string(b.found.size()) + " kinds of case boundary located along " +
-           std::to_string(kSegments) + " segments");
+    t.note("  " + std::to_string(b.found.size()) + " kinds of case boundary located along " + std::to_string(kSegments) +
+           " segments");
     t.at_most(tag + " flux jump across case boundaries, eq. (63)", b.jump_eq63, kContinuityTol);
     t.at_most(tag + " flux jump across case boundaries, exact", b.jump_exact, kContinuityTol);
     t.count(tag + " cases without a located boundary", groups_without_boundary(family, b), 0);
@@ -253,6 +253,6 @@ void check_shared_Phi(CheckTable& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_over_families(argc, argv, "Table 1: random sweep of the Riemann problem (52), four coefficient families",
-                             20200046, check_family, check_shared_Phi);
+    return run_over_families(argc, argv, "Table 1: random sweep of the Riemann problem (52), four coefficient families", 20200046,
+                             check_family, check_shared_Phi);
 }

@@ -75,10 +75,10 @@ double disc(double x, double z, double x0, double z0, double a) {
 }
 
 struct Errors {
-    double Phi = 0, phi = 0;         // L1 over the domain (area-weighted) at the end
+    double Phi = 0, phi = 0;  // L1 over the domain (area-weighted) at the end
     double min_Phi = INFINITY, min_hat = INFINITY, max_hat = -INFINITY;
     double mass_Phi = 0, mass_phi = 0;  // largest relative change over the run
-    double hat_lo = 0, hat_hi = 0;       // extremes of the initial phi_hat over material cells
+    double hat_lo = 0, hat_hi = 0;      // extremes of the initial phi_hat over material cells
 };
 
 /// The initial fields of part A at (x, z): Phi and phi_hat, smooth or discontinuous.
@@ -103,7 +103,8 @@ Errors rotate(int n, Scheme scheme, const Initial& initial) {
             const double x = grid.center(0, i), z = grid.center(2, k);
             grid.inside[grid.index(i, 0, k)] = x * x + z * z < R * R;
         }
-    const FaceFields U = stream_function_mass_fluxes(grid, [&](double x, double z) { return 0.5 * omega * (R * R - x * x - z * z); });
+    const FaceFields U =
+        stream_function_mass_fluxes(grid, [&](double x, double z) { return 0.5 * omega * (R * R - x * x - z * z); });
     std::vector<double> Phi(grid.cells(), 0.0), phi(grid.cells(), 0.0);
     Errors e;
     e.hat_lo = INFINITY, e.hat_hi = -INFINITY;
@@ -128,21 +129,22 @@ Errors rotate(int n, Scheme scheme, const Initial& initial) {
     const double mass_Phi0 = total(Phi), mass_phi0 = total(phi);
     std::vector<double> Phi_old;
     for (long s = 0; s < steps; ++s) {
-        if (scheme == Scheme::high_resolution)
-            reconstruction.face_values(Phi, refs(U), dt, MusclHancock::Form::conservative);
+        if (scheme == Scheme::high_resolution) reconstruction.face_values(Phi, refs(U), dt, MusclHancock::Form::conservative);
         for (int a : {0, 2})
             for_each_face(grid, a, [&](const FaceCells& f) {
                 const double u = U[a][f.face];
                 if (u == 0.0 || !is_open_face(grid, f)) return void(M[a][f.face] = 0.0);
                 const double value = scheme == Scheme::donor_cell ? (u > 0.0 ? Phi[f.lower] : Phi[f.upper])
-                                     : u > 0.0 ? reconstruction.from_lower()[a][f.face]
-                                               : reconstruction.from_upper()[a][f.face];
+                                     : u > 0.0                    ? reconstruction.from_lower()[a][f.face]
+                                                                  : reconstruction.from_upper()[a][f.face];
                 M[a][f.face] = u * value;
             });
         Phi_old = Phi;
         apply_mass_fluxes(grid, M, dt, Phi);
-        if (scheme == Scheme::donor_cell) donor.step(Phi_old, refs(M), {}, dt, phi);
-        else fct.step(Phi_old, Phi, refs(M), {}, dt, phi);
+        if (scheme == Scheme::donor_cell)
+            donor.step(Phi_old, refs(M), {}, dt, phi);
+        else
+            fct.step(Phi_old, Phi, refs(M), {}, dt, phi);
         for_each_bed_cell(grid, [&](const BedCell& b) {
             e.min_Phi = std::min(e.min_Phi, Phi[b.c]);
             e.min_hat = std::min(e.min_hat, phi[b.c] / Phi[b.c]), e.max_hat = std::max(e.max_hat, phi[b.c] / Phi[b.c]);
@@ -193,7 +195,7 @@ double periodic_box(const Material& m, int n, Transport transport) {
 /// Part C: what random compressible steps do to phi_hat, with the FCT step and with its unlimited
 /// high-order flux.
 struct StressResult {
-    long steps = 0, unlimited_outside = 0;  // steps; steps whose unlimited update left [0, 1]
+    long steps = 0, unlimited_outside = 0;          // steps; steps whose unlimited update left [0, 1]
     double worst_excess = 0.0, worst_amount = 0.0;  // FCT: largest excursion of phi_hat beyond [0, 1]; |change of sum phi|/sum
 };
 StressResult stress(long steps) {
@@ -247,7 +249,8 @@ StressResult stress(long steps) {
             G[a].assign(grid.faces(a), 0.0);
             for_each_face(grid, a, [&](const FaceCells& f) {
                 const double m = M[a][f.face];
-                if (m != 0.0) G[a][f.face] = m * (m > 0.0 ? high_order.from_lower()[a][f.face] : high_order.from_upper()[a][f.face]);
+                if (m != 0.0)
+                    G[a][f.face] = m * (m > 0.0 ? high_order.from_lower()[a][f.face] : high_order.from_upper()[a][f.face]);
             });
         }
         std::vector<double> unlimited = phi;
@@ -283,8 +286,12 @@ int main(int argc, char** argv) {
             for (int n : sizes) {
                 runs.push_back(rotate(n, scheme, Initial{smooth}));
                 const Errors& e = runs.back();
-                data.row({{"part", 0.0}, {"order", p}, {"smooth", smooth ? 1.0 : 0.0},
-                           {"n", static_cast<double>(n)}, {"error_Phi", e.Phi}, {"error_phi", e.phi}});
+                data.row({{"part", 0.0},
+                          {"order", p},
+                          {"smooth", smooth ? 1.0 : 0.0},
+                          {"n", static_cast<double>(n)},
+                          {"error_Phi", e.Phi},
+                          {"error_phi", e.phi}});
                 table.note(tag + "n = " + std::to_string(n) + ": L1 error Phi " + verify::format(e.Phi) + ", phi " +
                            verify::format(e.phi));
             }
@@ -316,8 +323,12 @@ int main(int argc, char** argv) {
         for (int q = 0; q < 3; ++q) {
             const int n = sizes[q] / 2;
             errors[q] = periodic_box(program.material, n, transport);
-            data.row({{"part", 1.0}, {"order", p}, {"smooth", 1.0}, {"n", static_cast<double>(n)},
-                       {"error_Phi", errors[q]}, {"error_phi", NAN}});
+            data.row({{"part", 1.0},
+                      {"order", p},
+                      {"smooth", 1.0},
+                      {"n", static_cast<double>(n)},
+                      {"error_Phi", errors[q]},
+                      {"error_phi", NAN}});
             table.note(tag + "n = " + std::to_string(n) + ": L1 error of Phi " + verify::format(errors[q]));
         }
         table.note(tag + "order 16 -> 32: " + verify::format(std::log2(errors[0] / errors[1])));

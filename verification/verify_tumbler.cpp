@@ -113,8 +113,8 @@ OutputSet run_watched(CheckTable& t, const TumblerScene& scene, CoupledTumbler& 
             if (k.grid().is_inside(c)) outside += !(k.phi()[c] >= 0.0 && k.phi()[c] <= k.flow().Phi()[c]);
         ++steps;
     });
-    t.note(verify::format(steps) + " flow steps, " + verify::format(tumbler.segregation_substeps()) +
-           " segregation sub-steps (" + verify::format(tumbler.segregation_steps()) + " steps of the segregation solver)");
+    t.note(verify::format(steps) + " flow steps, " + verify::format(tumbler.segregation_substeps()) + " segregation sub-steps (" +
+           verify::format(tumbler.segregation_steps()) + " steps of the segregation solver)");
     t.at_most("a. max relative change of the small phase (sum phi) over all steps", small, kMassTol);
     t.at_most("a. max relative change of the large phase (sum Phi - phi) over all steps", large, kMassTol);
     t.count("a. (cell, step) pairs with phi < 0 or phi > Phi after the step", outside, 0);
@@ -165,7 +165,9 @@ void check_direction(CheckTable& t, const CoupledTumbler& tumbler, double bed_le
         if (u.norm() > v_flow) deviation.push_back(90.0 - std::acos(std::min(1.0, std::fabs(d.dot(u)) / u.norm())) * 180 / M_PI);
     }
     std::sort(deviation.begin(), deviation.end());
-    const auto quantile = [&](double q) { return deviation.empty() ? NAN : deviation[static_cast<std::size_t>(q * (deviation.size() - 1))]; };
+    const auto quantile = [&](double q) {
+        return deviation.empty() ? NAN : deviation[static_cast<std::size_t>(q * (deviation.size() - 1))];
+    };
     t.note("c. 90 deg - angle(d_s, u_rel) in " + std::to_string(deviation.size()) + " flowing bed cells (|u_rel| > " +
            verify::format(v_flow) + " m/s): median " + verify::format(quantile(0.5)) + ", 90 % " + verify::format(quantile(0.9)) +
            ", max " + verify::format(quantile(1.0)) + " deg");
@@ -248,14 +250,15 @@ void check_packing_contrast(CheckTable& t) {
     PackingContrast result[2];
     double predicted = 0;
     for (int on = 1; on >= 0; --on) {
-        const TumblerScene scene = read_scene("verify_tumbler_bands", 5.0,
-                                              bands + "[coupling]\npacking_feedback = " + (on ? "true" : "false") + "\n");
+        const TumblerScene scene =
+            read_scene("verify_tumbler_bands", 5.0, bands + "[coupling]\npacking_feedback = " + (on ? "true" : "false") + "\n");
         CoupledTumbler tumbler(scene.setup);
         CoupledRunOptions run = scene.run;
         run.frames = 0;
         run_coupled_tumbler(tumbler, run);
         PackingContrastOptions o;
-        o.bed_level = scene.run.regions.bed_level, o.v_flow = scene.setup.drum.flowing_speed(), o.bin = scene.setup.drum.diameter / 20;
+        o.bed_level = scene.run.regions.bed_level, o.v_flow = scene.setup.drum.flowing_speed(),
+        o.bin = scene.setup.drum.diameter / 20;
         const DrumState d = drum_state(tumbler.flow(), o.bed_level, 0.8 * scene.setup.drum.radius(), o.v_flow);
         result[on] = packing_contrast(tumbler, d.surface_angle_deg, o);
         if (on) predicted = predicted_contrast(tumbler, o);

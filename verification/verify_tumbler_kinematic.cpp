@@ -55,8 +55,8 @@ constexpr double kMedianAngleBound = 6.0;    // deg, whole layer
 // area that is r < r_s ~ 0.035 m, so the ring r_core <= r < d lies wholly in the small half and
 // the periphery r >= 0.8 R wholly in the large half. Margins: donor-cell diffusion smears the
 // sorted bands over ~1 cm (below), a third of the band widths.
-constexpr double kRingAtLeast = 0.75;       // small fraction of the ring (sorted: 1)
-constexpr double kPeripheryAtMost = 0.25;   // small fraction of the periphery (sorted: 0)
+constexpr double kRingAtLeast = 0.75;      // small fraction of the ring (sorted: 1)
+constexpr double kPeripheryAtMost = 0.25;  // small fraction of the periphery (sorted: 0)
 // Index of a bed whose circulating part (86 % of the area) is sorted: sqrt(0.86) = 0.93; with
 // the smeared bands at least half of it.
 constexpr double kIndexAtLeast = 0.45;
@@ -81,7 +81,8 @@ constexpr double kInnerCoreFct = 1e-3;       // |phi_hat - 0.5| for r < r_core/2
 double degrees(double cosine) { return std::acos(std::min(1.0, std::fabs(cosine))) * 180 / M_PI; }
 
 fs::path scene_path() {
-    const fs::path beside = fs::canonical("/proc/self/exe").parent_path().parent_path().parent_path() / "figures/tumbler_kinematic.toml";
+    const fs::path beside =
+        fs::canonical("/proc/self/exe").parent_path().parent_path().parent_path() / "figures/tumbler_kinematic.toml";
     return fs::exists(beside) ? beside : fs::path("figures/tumbler_kinematic.toml");
 }
 
@@ -108,8 +109,7 @@ void check_direction(CheckTable& t, const KinematicTumbler& tumbler) {
         const double angle = degrees(a.normalized().dot(n));
         angles.push_back(angle);
         worst = std::max(worst, angle);
-        if (std::fabs(flow.surface_coordinates(b.x, b.z)[0]) <= flow.half_chord() / 2)
-            central = std::max(central, angle);
+        if (std::fabs(flow.surface_coordinates(b.x, b.z)[0]) <= flow.half_chord() / 2) central = std::max(central, angle);
     });
     std::sort(angles.begin(), angles.end());
     t.note("direction of a = S^sl in " + std::to_string(angles.size()) + " layer cells vs the surface normal: median " +
@@ -163,7 +163,8 @@ TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     t.note(std::to_string(tumbler.steps()) + " steps, dt = " + verify::format(tumbler.time_step()) + " s (bulk " +
            verify::format(tumbler.bulk_time_step()) + ", segregation " + verify::format(tumbler.segregation_time_step()) + "), " +
-           verify::format(tumbler.cell_updates() / seconds) + " cell updates/s (run with checks, " + verify::format(seconds) + " s)");
+           verify::format(tumbler.cell_updates() / seconds) + " cell updates/s (run with checks, " + verify::format(seconds) +
+           " s)");
     t.at_most("max relative change of sum(phi) over all steps", drift, kMassTol);
     t.count("steps whose bulk transport left [0, Phi] beyond round-off", bulk_violations, 0);
     t.count("(cell, step) pairs with phi < 0 or phi > Phi after the step", step_violations, 0);
@@ -173,17 +174,19 @@ TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, 
 }
 
 /// The pattern after the run (section 3 of the walk-through).
-void check_pattern(CheckTable& t, const TumblerKinematicScene& scene, const KinematicTumbler& tumbler, const TumblerRunResult& result) {
+void check_pattern(CheckTable& t, const TumblerKinematicScene& scene, const KinematicTumbler& tumbler,
+                   const TumblerRunResult& result) {
     const PatternRegions& r = scene.run.regions;
     const PatternMetrics& end = result.history.back().metrics;
     t.note("pattern at t = " + verify::format(result.history.back().t) + " s; regions: core r < " + verify::format(r.r_core) +
-           " m, ring " + verify::format(r.r_core) + " <= r < " + verify::format(r.r_ring) + " m, periphery r >= " +
-           verify::format(r.r_periphery) + " m; core (all of it) " + verify::format(end.core));
+           " m, ring " + verify::format(r.r_core) + " <= r < " + verify::format(r.r_ring) +
+           " m, periphery r >= " + verify::format(r.r_periphery) + " m; core (all of it) " + verify::format(end.core));
     t.at_least("small-particle fraction of the ring", end.ring, kRingAtLeast);
     t.at_most("small-particle fraction of the periphery", end.periphery, kPeripheryAtMost);
     t.at_least("segregation index std(phi_hat)/sqrt(m(1-m))", end.index, kIndexAtLeast);
     if (scene.setup.bulk == BulkScheme::fct)
-        t.near("|phi_hat - 0.5| in the inner core r < r_core/2 (FCT)", inner_composition(tumbler, r.r_core / 2) - 0.5, 0.0, kInnerCoreFct);
+        t.near("|phi_hat - 0.5| in the inner core r < r_core/2 (FCT)", inner_composition(tumbler, r.r_core / 2) - 0.5, 0.0,
+               kInnerCoreFct);
     else
         t.near("|phi_hat - 0.5| in the inner core r < r_core/4 (donor cell)", inner_composition(tumbler, r.r_core / 4) - 0.5, 0.0,
                kInnerCoreDonorCell);
@@ -200,9 +203,11 @@ int main(int argc, char** argv) {
     const TumblerKinematicScene scene = read_tumbler_kinematic(file);
     file.finish();
     CheckTable t("Kinematic tumbler (Sect. 4.2): " + path.filename().string() + ", " +
-                 std::to_string(scene.setup.cells_per_diameter) + " cells per diameter, " + verify::format(scene.run.t_end) + " s");
+                 std::to_string(scene.setup.cells_per_diameter) + " cells per diameter, " + verify::format(scene.run.t_end) +
+                 " s");
 
-    t.note("the scene file as it is (bulk transport " + std::string(scene.setup.bulk == BulkScheme::fct ? "fct" : "donor-cell") + ")");
+    t.note("the scene file as it is (bulk transport " + std::string(scene.setup.bulk == BulkScheme::fct ? "fct" : "donor-cell") +
+           ")");
     KinematicTumbler tumbler(scene.setup);
     bool completed = false;
     const TumblerRunResult result = run_watched(t, scene, tumbler, completed);

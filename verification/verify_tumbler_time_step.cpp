@@ -32,9 +32,9 @@ using granseg::verify::CheckTable;
 
 namespace {
 
-constexpr int kCells = 26;        // cells per diameter: the smallest tumbler grid (C4) but one
-constexpr double kEnd = 5.0;      // s
-constexpr double kS = 5.0;        // s/m, S0 of eq. (46)
+constexpr int kCells = 26;                        // cells per diameter: the smallest tumbler grid (C4) but one
+constexpr double kEnd = 5.0;                      // s
+constexpr double kS = 5.0;                        // s/m, S0 of eq. (46)
 constexpr double kDtMax = FlowSettings{}.dt_max;  // the default step
 
 // Tolerances. The angle: the accuracy asked of the default step on the paper's drum (0.2 deg of
@@ -44,8 +44,8 @@ constexpr double kDtMax = FlowSettings{}.dt_max;  // the default step
 // it to twice the paper's accuracy. A segregation sub-step that covers its own stretch of time
 // instead of the flow's step (the multi-rate split the drum once used) exceeds both bounds
 // (docs/history.md).
-constexpr double kAngleTol = 0.2;    // deg
-constexpr double kShareTol = 0.02;   // of the small-particle share
+constexpr double kAngleTol = 0.2;   // deg
+constexpr double kShareTol = 0.02;  // of the small-particle share
 
 struct Quantities {
     double angle, core, axis;
@@ -76,31 +76,36 @@ Quantities run_drum(bool feedback, double dt) {
 
 int main(int argc, char** argv) {
     const verify::ProgramOptions options = verify::parse_program_options(argc, argv);
-    CheckTable t("Sect. 4.2: the coupled drum's time error at the default step (" + std::to_string(kCells) + " cells, S0 = " +
-                 verify::format(kS) + " s/m, " + verify::format(kEnd) + " s)");
+    CheckTable t("Sect. 4.2: the coupled drum's time error at the default step (" + std::to_string(kCells) +
+                 " cells, S0 = " + verify::format(kS) + " s/m, " + verify::format(kEnd) + " s)");
     DataTable data;
-    data.comment("verify_tumbler_time_step: the drum of Sect. 4.2 at " + std::to_string(kCells) + " cells per diameter, S0 = " +
-                 verify::format(kS) + " s/m, t_end " + verify::format(kEnd) + " s; angle: mean over t >= " + verify::format(kEnd / 2) +
+    data.comment("verify_tumbler_time_step: the drum of Sect. 4.2 at " + std::to_string(kCells) +
+                 " cells per diameter, S0 = " + verify::format(kS) + " s/m, t_end " + verify::format(kEnd) +
+                 " s; angle: mean over t >= " + verify::format(kEnd / 2) +
                  " s (deg); core, axis: small-particle shares at t_end (the drum's own regions)");
     Quantities q[2][2];  // [feedback][0: dt, 1: dt/4]
     for (int fb = 0; fb < 2; ++fb)
         for (int k = 0; k < 2; ++k) {
             const double dt = k == 0 ? kDtMax : 0.25 * kDtMax;
             q[fb][k] = run_drum(fb == 1, dt);
-            data.row({{"feedback", static_cast<double>(fb)}, {"dt_max", dt}, {"angle", q[fb][k].angle}, {"core", q[fb][k].core}, {"axis", q[fb][k].axis}});
+            data.row({{"feedback", static_cast<double>(fb)},
+                      {"dt_max", dt},
+                      {"angle", q[fb][k].angle},
+                      {"core", q[fb][k].core},
+                      {"axis", q[fb][k].axis}});
         }
     verify::write_data(options, "time_step_small.dat", data);
     const auto coupling_error = [&](double Quantities::*field) {
         const double delta = (q[1][0].*field - q[1][1].*field) - (q[0][0].*field - q[0][1].*field);
         return 4.0 / 3.0 * std::fabs(delta);
     };
-    t.note("flow alone (no feedback), dt -> dt/4: angle " + verify::format(q[0][0].angle) + " -> " + verify::format(q[0][1].angle) +
-           " deg (its own time error, not the coupling's)");
-    t.note("full model, dt -> dt/4: angle " + verify::format(q[1][0].angle) + " -> " + verify::format(q[1][1].angle) + " deg, core " +
-           verify::format(q[1][0].core) + " -> " + verify::format(q[1][1].core) + ", axis " + verify::format(q[1][0].axis) + " -> " +
-           verify::format(q[1][1].axis));
-    t.at_most("coupling's time error of the angle at dt_max " + verify::format(1e3 * kDtMax) + " ms (deg)", coupling_error(&Quantities::angle),
-              kAngleTol);
+    t.note("flow alone (no feedback), dt -> dt/4: angle " + verify::format(q[0][0].angle) + " -> " +
+           verify::format(q[0][1].angle) + " deg (its own time error, not the coupling's)");
+    t.note("full model, dt -> dt/4: angle " + verify::format(q[1][0].angle) + " -> " + verify::format(q[1][1].angle) +
+           " deg, core " + verify::format(q[1][0].core) + " -> " + verify::format(q[1][1].core) + ", axis " +
+           verify::format(q[1][0].axis) + " -> " + verify::format(q[1][1].axis));
+    t.at_most("coupling's time error of the angle at dt_max " + verify::format(1e3 * kDtMax) + " ms (deg)",
+              coupling_error(&Quantities::angle), kAngleTol);
     t.at_most("coupling's time error of the core's small-particle share", coupling_error(&Quantities::core), kShareTol);
     t.at_most("coupling's time error of the share near the axis", coupling_error(&Quantities::axis), kShareTol);
     return t.finish();

@@ -16,11 +16,10 @@ int closures_main(const std::vector<std::string>& args) {
     double Phi = 0, phi_hat = 0, T = 0;
     std::string scene_path;
     po::options_description desc("options (units per intrinsic density rho*: p, T in m^2/s^2)");
-    desc.add_options()
-        ("Phi", po::value<double>(&Phi)->required(), "granular volume fraction, 0 <= Phi < Phi_rcp(phi_hat)")
-        ("phi-hat", po::value<double>(&phi_hat)->required(), "small-particle share phi/Phi, 0 <= phi_hat <= 1")
-        ("T", po::value<double>(&T)->required(), "granular temperature, T >= 0")
-        ("scene", po::value<std::string>(&scene_path), "take the material from the [material] section of this scene file");
+    desc.add_options()("Phi", po::value<double>(&Phi)->required(), "granular volume fraction, 0 <= Phi < Phi_rcp(phi_hat)")(
+        "phi-hat", po::value<double>(&phi_hat)->required(), "small-particle share phi/Phi, 0 <= phi_hat <= 1")(
+        "T", po::value<double>(&T)->required(), "granular temperature, T >= 0")(
+        "scene", po::value<std::string>(&scene_path), "take the material from the [material] section of this scene file");
     po::variables_map vm;
     if (!parse_options("closures", "--Phi X --phi-hat Y --T Z [--scene FILE]", args, desc, {}, vm)) return 0;
 
@@ -38,11 +37,21 @@ int closures_main(const std::vector<std::string>& args) {
 
     const ClosureValues v = evaluate_closures(m, Phi, phi_hat, T);
     const std::pair<const char*, double> lines[] = {
-        {"Phi", Phi}, {"phi_hat", phi_hat}, {"T", T},
-        {"Phi_rcp", v.Phi_rcp}, {"Phi_co", v.Phi_co}, {"g", v.g},
-        {"p_k", v.p_k}, {"p_y", v.p_y}, {"p", v.p}, {"p_Pa", v.p * m.rho_star},
-        {"eta", v.eta}, {"lambda", v.lambda}, {"eps", v.eps},
-        {"dissipation", v.dissipation}, {"c", std::sqrt(v.c2)},
+        {"Phi", Phi},
+        {"phi_hat", phi_hat},
+        {"T", T},
+        {"Phi_rcp", v.Phi_rcp},
+        {"Phi_co", v.Phi_co},
+        {"g", v.g},
+        {"p_k", v.p_k},
+        {"p_y", v.p_y},
+        {"p", v.p},
+        {"p_Pa", v.p * m.rho_star},
+        {"eta", v.eta},
+        {"lambda", v.lambda},
+        {"eps", v.eps},
+        {"dissipation", v.dissipation},
+        {"c", std::sqrt(v.c2)},
     };
     for (const auto& [name, value] : lines) std::cout << name << " = " << format_number(value, 10) << '\n';
     return 0;

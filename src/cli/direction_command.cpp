@@ -37,8 +37,8 @@ std::vector<double> number_list(const std::string& option, const std::string& te
         values.push_back(v);
     }
     if (values.size() != count)
-        throw InputError("granseg direction: --" + option + ": expected " + std::to_string(count) + " numbers (" +
-                         layout + "), got " + std::to_string(values.size()));
+        throw InputError("granseg direction: --" + option + ": expected " + std::to_string(count) + " numbers (" + layout +
+                         "), got " + std::to_string(values.size()));
     return values;
 }
 
@@ -52,14 +52,13 @@ std::string vector_text(const Eigen::Vector3d& v) {
 /// The direction's answer, one "name = value" line each: status, d_s, P, the shear rates and
 /// eigenvalues, k_max, k_min, d_plus, d_minus and their |d . u|, T and S^sl.
 void print_direction(const SegregationDirection& r, const Eigen::Vector3d& u, double T, const Eigen::Vector3d& S_sl) {
-    std::cout << "status = " << to_string(r.status) << '\n'
-              << "d_s = " << vector_text(r.d_s) << '\n';
+    std::cout << "status = " << to_string(r.status) << '\n' << "d_s = " << vector_text(r.d_s) << '\n';
     const Eigen::Matrix3d P = r.P();
-    std::cout << "P = " << vector_text(P.row(0).transpose()) << ' ' << vector_text(P.row(1).transpose()) << ' ' << vector_text(P.row(2).transpose()) << '\n';
+    std::cout << "P = " << vector_text(P.row(0).transpose()) << ' ' << vector_text(P.row(1).transpose()) << ' '
+              << vector_text(P.row(2).transpose()) << '\n';
     const std::pair<const char*, double> scalars[] = {
-        {"gamma_dot", r.gamma_dot}, {"principal_shear", r.principal_shear},
-        {"kappa_min", r.eigen.kappa_min}, {"kappa_mid", r.eigen.kappa_mid}, {"kappa_max", r.eigen.kappa_max},
-        {"relative_gap", r.eigen.relative_gap},
+        {"gamma_dot", r.gamma_dot},       {"principal_shear", r.principal_shear}, {"kappa_min", r.eigen.kappa_min},
+        {"kappa_mid", r.eigen.kappa_mid}, {"kappa_max", r.eigen.kappa_max},       {"relative_gap", r.eigen.relative_gap},
     };
     for (const auto& [name, value] : scalars) std::cout << name << " = " << number_text(value) << '\n';
     std::cout << "k_max = " << vector_text(sign_normalised(r.eigen.k_max)) << '\n'
@@ -79,21 +78,28 @@ int direction_main(const std::vector<std::string>& args) {
     double T = -1, S0 = 1;
     DirectionOptions options;
     po::options_description desc("options (grad in 1/s, u in m/s; pass the rotating-frame u and grad in a rotating drum)");
-    desc.add_options()
-        ("grad", po::value<std::string>(&grad_text)->required(), "velocity gradient, 9 numbers row by row, grad(i,j) = du_i/dx_j")
-        ("u", po::value<std::string>(&u_text)->required(), "velocity, 3 numbers")
-        ("T", po::value<double>(&T), "granular temperature for S^sl (m^2/s^2; default: eq. (45) at gamma_dot, substitute material)")
-        ("S0", po::value<double>(&S0)->default_value(1.0), "segregation rate S0 of eq. (46) (s/m)")
-        ("gravity", po::value<std::string>(&gravity_text)->default_value(gravity_text), "gravity vector g (m/s^2), 3 numbers")
-        ("shear-threshold", po::value<double>(&options.shear_threshold)->default_value(options.shear_threshold, format_number(options.shear_threshold)),
-         "no shear if kappa_max - kappa_min <= this (1/s), assumption D1")
-        ("min-relative-gap", po::value<double>(&options.min_relative_gap)->default_value(options.min_relative_gap, format_number(options.min_relative_gap)),
-         "repeated eigenvalue below this relative gap, assumption D2")
-        ("tie-tolerance", po::value<double>(&options.tie_tolerance)->default_value(options.tie_tolerance, format_number(options.tie_tolerance)),
-         "equal candidates within this fraction of |u|, assumption D4")
-        ("min-speed", po::value<double>(&options.min_speed)->default_value(options.min_speed, format_number(options.min_speed)), "u = 0 if |u| <= this (m/s), assumption D3")
-        ("solver", po::value<std::string>(&method)->default_value(method), "Eigen solver: iterative | closed-form")
-        ("planar", po::bool_switch(&options.planar_xz), "2-D flow in the x-z plane: eigenpairs of the x-z block (assumption D5)");
+    desc.add_options()("grad", po::value<std::string>(&grad_text)->required(),
+                       "velocity gradient, 9 numbers row by row, grad(i,j) = du_i/dx_j")(
+        "u", po::value<std::string>(&u_text)->required(), "velocity, 3 numbers")(
+        "T", po::value<double>(&T),
+        "granular temperature for S^sl (m^2/s^2; default: eq. (45) at gamma_dot, substitute material)")(
+        "S0", po::value<double>(&S0)->default_value(1.0), "segregation rate S0 of eq. (46) (s/m)")(
+        "gravity", po::value<std::string>(&gravity_text)->default_value(gravity_text), "gravity vector g (m/s^2), 3 numbers")(
+        "shear-threshold",
+        po::value<double>(&options.shear_threshold)
+            ->default_value(options.shear_threshold, format_number(options.shear_threshold)),
+        "no shear if kappa_max - kappa_min <= this (1/s), assumption D1")(
+        "min-relative-gap",
+        po::value<double>(&options.min_relative_gap)
+            ->default_value(options.min_relative_gap, format_number(options.min_relative_gap)),
+        "repeated eigenvalue below this relative gap, assumption D2")(
+        "tie-tolerance",
+        po::value<double>(&options.tie_tolerance)->default_value(options.tie_tolerance, format_number(options.tie_tolerance)),
+        "equal candidates within this fraction of |u|, assumption D4")(
+        "min-speed", po::value<double>(&options.min_speed)->default_value(options.min_speed, format_number(options.min_speed)),
+        "u = 0 if |u| <= this (m/s), assumption D3")("solver", po::value<std::string>(&method)->default_value(method),
+                                                     "Eigen solver: iterative | closed-form")(
+        "planar", po::bool_switch(&options.planar_xz), "2-D flow in the x-z plane: eigenpairs of the x-z block (assumption D5)");
     po::variables_map vm;
     if (!parse_options("direction", "--grad \"g11 ... g33\" --u \"u1 u2 u3\" [options]", args, desc, {}, vm)) return 0;
 

@@ -26,8 +26,8 @@ std::string num(double v) { return format_number(v, kDigits); }
 /// Throws the one-line InputError of a positional argument outside its range.
 double checked_positional(const std::string& name, double v, const Range& range) {
     if (!range.contains(v))
-        throw InputError("granseg riemann: " + name + ": " + format_number(v) + " is out of range (allowed: " +
-                         range.describe(name) + ")");
+        throw InputError("granseg riemann: " + name + ": " + format_number(v) +
+                         " is out of range (allowed: " + range.describe(name) + ")");
     return v;
 }
 
@@ -51,18 +51,19 @@ int riemann_main(const std::vector<std::string>& args) {
     double phi_L = 0, Phi_L = 0, phi_R = 0, Phi_R = 0, T_L = 1, T_R = 1, S = 1, S_L = 1, S_R = 1;
     int samples = 0;
     po::options_description desc("arguments and options (a = S sqrt(T) on each side, eqs. 49, 66)");
-    desc.add_options()
-        ("PHI_SMALL_L", po::value<double>(&phi_L)->required(), "left small-particle fraction phi_L, 0 <= phi_L <= Phi_L")
-        ("PHI_L", po::value<double>(&Phi_L)->required(), "left granular fraction Phi_L, 0 < Phi_L < 1")
-        ("PHI_SMALL_R", po::value<double>(&phi_R)->required(), "right small-particle fraction phi_R, 0 <= phi_R <= Phi_R")
-        ("PHI_R", po::value<double>(&Phi_R)->required(), "right granular fraction Phi_R, 0 < Phi_R < 1")
-        ("TL", po::value<double>(&T_L), "left granular temperature, T >= 0 (default 1)")
-        ("TR", po::value<double>(&T_R), "right granular temperature, T >= 0 (default 1)")
-        ("S", po::value<double>(&S), "segregation rate of both sides, any sign (default 1)")
-        ("SL", po::value<double>(&S_L), "segregation rate of the left side (default --S); negative or "
-                                        "opposite signs model (S^sl)_k < 0, docs/assumptions.md S1")
-        ("SR", po::value<double>(&S_R), "segregation rate of the right side (default --S)")
-        ("sample", po::value<int>(&samples), "also print phi(xi) at N points of [-1.25 a_max, 1.25 a_max]");
+    desc.add_options()("PHI_SMALL_L", po::value<double>(&phi_L)->required(),
+                       "left small-particle fraction phi_L, 0 <= phi_L <= Phi_L")("PHI_L", po::value<double>(&Phi_L)->required(),
+                                                                                  "left granular fraction Phi_L, 0 < Phi_L < 1")(
+        "PHI_SMALL_R", po::value<double>(&phi_R)->required(), "right small-particle fraction phi_R, 0 <= phi_R <= Phi_R")(
+        "PHI_R", po::value<double>(&Phi_R)->required(), "right granular fraction Phi_R, 0 < Phi_R < 1")(
+        "TL", po::value<double>(&T_L), "left granular temperature, T >= 0 (default 1)")(
+        "TR", po::value<double>(&T_R), "right granular temperature, T >= 0 (default 1)")(
+        "S", po::value<double>(&S), "segregation rate of both sides, any sign (default 1)")(
+        "SL", po::value<double>(&S_L),
+        "segregation rate of the left side (default --S); negative or "
+        "opposite signs model (S^sl)_k < 0, docs/assumptions.md S1")("SR", po::value<double>(&S_R),
+                                                                     "segregation rate of the right side (default --S)")(
+        "sample", po::value<int>(&samples), "also print phi(xi) at N points of [-1.25 a_max, 1.25 a_max]");
     po::positional_options_description positional;
     positional.add("PHI_SMALL_L", 1).add("PHI_L", 1).add("PHI_SMALL_R", 1).add("PHI_R", 1);
     po::variables_map vm;

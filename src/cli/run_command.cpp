@@ -17,11 +17,11 @@ int run_main(const std::vector<std::string>& args) {
     std::string scene, output_dir;
     bool resume = false;
     po::options_description desc("options");
-    desc.add_options()
-        ("scene", po::value<std::string>(&scene)->required(), "the scene file (TOML), see docs/scenes.md")
-        ("output-dir", po::value<std::string>(&output_dir), "write outputs here instead of [output] dir")
-        ("resume", po::bool_switch(&resume), "continue from the checkpoint in the output directory (a finished run: "
-                                             "to a later t_end, or its outputs written again); none: start at t = 0");
+    desc.add_options()("scene", po::value<std::string>(&scene)->required(), "the scene file (TOML), see docs/scenes.md")(
+        "output-dir", po::value<std::string>(&output_dir), "write outputs here instead of [output] dir")(
+        "resume", po::bool_switch(&resume),
+        "continue from the checkpoint in the output directory (a finished run: "
+        "to a later t_end, or its outputs written again); none: start at t = 0");
     po::positional_options_description positional;
     positional.add("scene", 1);
     std::string usage = "SCENE.toml [--output-dir DIR] [--resume]\n\nscene kinds ([scene] kind):\n";

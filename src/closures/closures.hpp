@@ -60,18 +60,16 @@ inline double yield_excess(double T0, double Phi, double Phi_co) {
 }
 
 /// Yield pressure p_y = Theta(Phi - Phi_co) T0 (Phi - Phi_co) g (eq. 19).
-inline double yield_pressure(double T0, double Phi, double Phi_co, double g) {
-    return yield_excess(T0, Phi, Phi_co) * g;
-}
+inline double yield_pressure(double T0, double Phi, double Phi_co, double g) { return yield_excess(T0, Phi, Phi_co) * g; }
 
 /// Every closure at one state (Phi, phi_hat, T).
 struct ClosureValues {
-    double Phi_rcp, Phi_co;  // packing limits at phi_hat
-    double g;                // compressibility factor (eq. 18 substitute)
-    double p_k, p_y, p;      // pressures (eqs. 16, 19, 15)
-    double eta, lambda, eps; // transport coefficients (eqs. 17, 20)
-    double dissipation;      // eps Phi T, the sink of eq. (14)
-    double c2;               // dp/dPhi at fixed T and phi_hat: squared sound speed of eqs. (8)-(9)
+    double Phi_rcp, Phi_co;   // packing limits at phi_hat
+    double g;                 // compressibility factor (eq. 18 substitute)
+    double p_k, p_y, p;       // pressures (eqs. 16, 19, 15)
+    double eta, lambda, eps;  // transport coefficients (eqs. 17, 20)
+    double dissipation;       // eps Phi T, the sink of eq. (14)
+    double c2;                // dp/dPhi at fixed T and phi_hat: squared sound speed of eqs. (8)-(9)
 };
 
 /// Evaluates eqs. (15)-(20) at (Phi, T) with the packing limits Phi_rcp, Phi_co already known

@@ -24,15 +24,15 @@ inline constexpr Choice<CompressibilityLaw> kCompressibilityLaws[] = {
 };
 
 struct Material {
-    PackingFit packing;       // Phi_rcp(phi_hat), Phi_co(phi_hat)
+    PackingFit packing;  // Phi_rcp(phi_hat), Phi_co(phi_hat)
     // The values below are the Table 2 substitute; each is justified in docs/assumptions.md.
-    double eta0 = 1.9e-4;     // m,  viscosity scale (eq. 17)
-    double lambda0 = 3.8e-4;  // m,  conductivity scale (eq. 17)
-    double eps0 = 1.3e3;      // 1/m, dissipation scale (eq. 17)
-    double T0 = 1.0;          // m^2/s^2, yield parameter (eq. 19)
-    double rho_star = 2500.0; // kg/m^3, intrinsic density; only converts p to Pa in output
+    double eta0 = 1.9e-4;      // m,  viscosity scale (eq. 17)
+    double lambda0 = 3.8e-4;   // m,  conductivity scale (eq. 17)
+    double eps0 = 1.3e3;       // 1/m, dissipation scale (eq. 17)
+    double T0 = 1.0;           // m^2/s^2, yield parameter (eq. 19)
+    double rho_star = 2500.0;  // kg/m^3, intrinsic density; only converts p to Pa in output
     CompressibilityLaw g_law = CompressibilityLaw::power;
-    double beta = 1.0;        // exponent of the power law
+    double beta = 1.0;  // exponent of the power law
 
     /// The substitute for Table 2 (docs/assumptions.md) with the built-in packing table.
     static Material glass_substitute();

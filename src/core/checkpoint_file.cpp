@@ -151,7 +151,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     const std::size_t payload = std::strtoull(field["payload"].c_str(), nullptr, 10);
     if (text.size() - at < payload)
         throw fail("truncated: " + std::to_string(text.size() - at) + " of its " + std::to_string(payload) + " bytes of state");
-    if (text.size() - at > payload) throw fail("corrupted: " + std::to_string(text.size() - at - payload) + " bytes more than its header says");
+    if (text.size() - at > payload)
+        throw fail("corrupted: " + std::to_string(text.size() - at - payload) + " bytes more than its header says");
     const std::string_view body(text.data() + at, payload);
     if (checksum_of(std::string_view(text).substr(0, checksum_line), body) != field["checksum"])
         throw fail("corrupted: its checksum does not match its contents");

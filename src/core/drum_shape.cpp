@@ -58,9 +58,7 @@ double DrumShape::gauge(double x, double z) const {
     return R_ * largest / a_;
 }
 
-double DrumShape::area() const {
-    return kind_ == DrumShapeKind::circle ? M_PI * R_ * R_ : polygon_area(corners_);
-}
+double DrumShape::area() const { return kind_ == DrumShapeKind::circle ? M_PI * R_ * R_ : polygon_area(corners_); }
 
 double DrumShape::lowest() const {
     if (kind_ == DrumShapeKind::circle) return -R_;
@@ -96,9 +94,12 @@ double DrumShape::chord(double offset, double direction) const {
     for (std::size_t v = 0; v < corners_.size(); ++v) {
         const Point2 n = side_normal(corners_, v);
         const double along = n.x * u.x + n.z * u.z, room = a_ - (n.x * p.x + n.z * p.z);
-        if (along > 0.0) hi = std::min(hi, room / along);
-        else if (along < 0.0) lo = std::max(lo, room / along);
-        else if (room <= 0.0) return 0.0;
+        if (along > 0.0)
+            hi = std::min(hi, room / along);
+        else if (along < 0.0)
+            lo = std::max(lo, room / along);
+        else if (room <= 0.0)
+            return 0.0;
     }
     return std::max(0.0, hi - lo);
 }

@@ -29,8 +29,8 @@ public:
     DrumShapeKind kind() const { return kind_; }
     int sides() const { return static_cast<int>(corners_.size()); }  // 0 for the circle
     double orientation() const { return orientation_; }
-    double radius() const { return R_; }      // the circle through the corners (m)
-    double inradius() const { return a_; }    // the largest circle about the axis inside (m)
+    double radius() const { return R_; }                 // the circle through the corners (m)
+    double inradius() const { return a_; }               // the largest circle about the axis inside (m)
     const Polygon& corners() const { return corners_; }  // counter-clockwise; empty for the circle
 
     /// True for a point strictly inside.

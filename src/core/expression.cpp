@@ -18,15 +18,13 @@ Expression::Expression(const std::string& text, const std::vector<std::string>& 
     : text_(text), variables_(variables), impl_(std::make_unique<Impl>()) {
     impl_->storage.assign(variables_.size(), 0.0);
     try {
-        for (std::size_t i = 0; i < variables_.size(); ++i)
-            impl_->parser.DefineVar(variables_[i], &impl_->storage[i]);
+        for (std::size_t i = 0; i < variables_.size(); ++i) impl_->parser.DefineVar(variables_[i], &impl_->storage[i]);
         impl_->parser.SetExpr(text_);
         // GetUsedVar parses with undefined names allowed, so an unknown name is reported as
         // such instead of as muparser's generic "unexpected token".
         for (const auto& used : impl_->parser.GetUsedVar()) {
             if (std::find(variables_.begin(), variables_.end(), used.first) == variables_.end())
-                throw InputError("unknown variable \"" + used.first +
-                                            "\" (variables: " + comma_list(variables_) + ")");
+                throw InputError("unknown variable \"" + used.first + "\" (variables: " + comma_list(variables_) + ")");
         }
         impl_->parser.Eval();  // surfaces remaining syntax errors now, not at first use
     } catch (const mu::Parser::exception_type& e) {
@@ -47,8 +45,7 @@ Expression::~Expression() = default;
 
 double Expression::operator()(const std::vector<double>& values) const {
     if (values.size() != variables_.size())
-        throw InputError("expression \"" + text_ + "\" needs " +
-                                    std::to_string(variables_.size()) + " values");
+        throw InputError("expression \"" + text_ + "\" needs " + std::to_string(variables_.size()) + " values");
     std::copy(values.begin(), values.end(), impl_->storage.begin());
     return impl_->parser.Eval();
 }

@@ -15,8 +15,7 @@ Grid Grid::column(int nz, double length) {
 }
 
 Grid Grid::plane_xz(int nx, int nz, double x0, double z0, double lx, double lz) {
-    if (nx < 1 || nz < 1 || !(lx > 0) || !(lz > 0))
-        throw InputError("Grid::plane_xz: need nx, nz >= 1 and lx, lz > 0");
+    if (nx < 1 || nz < 1 || !(lx > 0) || !(lz > 0)) throw InputError("Grid::plane_xz: need nx, nz >= 1 and lx, lz > 0");
     Grid g;
     g.n = {nx, 1, nz};
     g.h = {lx / nx, 1.0, lz / nz};

@@ -21,11 +21,11 @@
 namespace granseg {
 
 struct Grid {
-    std::array<int, 3> n{1, 1, 1};                 // cells per axis
-    std::array<double, 3> h{1.0, 1.0, 1.0};        // cell size per axis
-    std::array<double, 3> origin{0.0, 0.0, 0.0};   // lower corner of the domain
+    std::array<int, 3> n{1, 1, 1};                // cells per axis
+    std::array<double, 3> h{1.0, 1.0, 1.0};       // cell size per axis
+    std::array<double, 3> origin{0.0, 0.0, 0.0};  // lower corner of the domain
     std::array<bool, 3> periodic{false, false, false};
-    std::vector<unsigned char> inside;             // one flag per cell; empty means all inside
+    std::vector<unsigned char> inside;  // one flag per cell; empty means all inside
 
     /// A 1-D column of `nz` cells on [0, length] along z.
     static Grid column(int nz, double length);

@@ -79,9 +79,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     }
 }
 
-void OutputSet::add(const std::string& path, std::string content) {
-    files_.emplace_back(path, std::move(content));
-}
+void OutputSet::add(const std::string& path, std::string content) { files_.emplace_back(path, std::move(content)); }
 
 void OutputSet::checkpoint(StateIO& io) {
     std::uint64_t n = files_.size();

@@ -56,7 +56,9 @@ public:
     /// The whole table as text.
     std::string str() const;
     /// Saves or restores (core/state_io.hpp) the table so far.
-    void checkpoint(StateIO& io) { io("table.columns", columns_)("table.comments", comments_)("table.body", body_)("table.rows", rows_); }
+    void checkpoint(StateIO& io) {
+        io("table.columns", columns_)("table.comments", comments_)("table.body", body_)("table.rows", rows_);
+    }
 
 private:
     std::vector<std::string> columns_;

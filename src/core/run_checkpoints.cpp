@@ -55,8 +55,7 @@ void unwatch_signals() {
 
 int stop_signal() { return requested.load(); }
 
-StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, BlobStore* files,
-                     RunTime* clock) {
+StateIO runner_state(const Checkpoint& c, const std::string& block, const std::string& path, BlobStore* files, RunTime* clock) {
     if (files && c.has("files")) {
         StateIO in(c.block("files", path), path);
         std::uint64_t n = 0;
@@ -141,7 +140,8 @@ std::string RunCheckpoints::mismatch(const Checkpoint& c) const {
     const std::string& settings = c.block("scene", plan_.path);
     if (c.scene != hash_text(settings)) return "corrupted: its scene does not match its fingerprint";
     if (settings != plan_.settings) {
-        const std::string theirs = first_setting_missing(settings, plan_.settings), ours = first_setting_missing(plan_.settings, settings);
+        const std::string theirs = first_setting_missing(settings, plan_.settings),
+                          ours = first_setting_missing(plan_.settings, settings);
         return "written for a scene with " + (theirs.empty() ? "no " + ours : theirs) + ", this scene has " +
                (ours.empty() ? "no such key" : ours);
     }
@@ -168,7 +168,8 @@ bool RunCheckpoints::resume(double t_end, const RunState& state) {
     // (written out again, it keeps that state for a later extension).
     const bool extend = c.finished && t_end > c.t && c.has("resume");
     if (!extend && t_end < c.t)
-        return refuse("its state is at t = " + format_number(c.t, 17) + " s, after this scene's t_end = " + format_number(t_end, 17) + " s");
+        return refuse("its state is at t = " + format_number(c.t, 17) +
+                      " s, after this scene's t_end = " + format_number(t_end, 17) + " s");
     BlobStore files;
     StateIO io = runner_state(c, extend ? "resume" : "state", plan_.path, &files, &earlier_);
     if (c.finished && !extend && c.has("resume")) kept_ = c.block("resume", plan_.path), kept_files_ = files;
@@ -207,15 +208,15 @@ void RunCheckpoints::after_step(double t, long steps, const RunState& state) {
             return;
         }
         written.clear();
-        throw Interrupted(std::string("granseg: stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") + " at t = " +
-                              format_number(t) + " s without a new checkpoint: " + e.what(),
+        throw Interrupted(std::string("granseg: stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                              " at t = " + format_number(t) + " s without a new checkpoint: " + e.what(),
                           signal);
     }
     last_ = std::chrono::steady_clock::now();
     if (signal)
-        throw Interrupted(std::string("granseg: stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") + " at t = " +
-                              format_number(t) + " s after " + std::to_string(steps) + " steps; checkpoint " + written +
-                              "; continue with: " + plan_.resume_command,
+        throw Interrupted(std::string("granseg: stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                              " at t = " + format_number(t) + " s after " + std::to_string(steps) + " steps; checkpoint " +
+                              written + "; continue with: " + plan_.resume_command,
                           signal);
 }
 
@@ -233,8 +234,9 @@ void RunCheckpoints::finish(double t, long steps, const RunState& state) {
     // Their cost, for long runs only (as the progress lines: quiet for the first seconds).
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (wall >= kQuietSeconds)
-        std::fprintf(stderr, "%s: %d checkpoints written, the last %.1f MB; %.2f s with the states kept before the last steps, "
-                             "%.2f %% of this run's %.0f s\n",
+        std::fprintf(stderr,
+                     "%s: %d checkpoints written, the last %.1f MB; %.2f s with the states kept before the last steps, "
+                     "%.2f %% of this run's %.0f s\n",
                      plan_.path.c_str(), written_, last_size_ / 1e6, spent_, 100.0 * spent_ / wall, wall);
 }
 

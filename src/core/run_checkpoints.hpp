@@ -45,13 +45,13 @@ enum class Resume {
 };
 
 struct CheckpointPlan {
-    std::string path;             // the checkpoint file; empty: no checkpoints
-    double every = 600.0;         // wall-clock seconds between checkpoints
+    std::string path;      // the checkpoint file; empty: no checkpoints
+    double every = 600.0;  // wall-clock seconds between checkpoints
     Resume resume = Resume::no;
-    std::string kind;             // the scene kind
-    std::string settings;         // SceneFile::settings() without the keys a resume may change
-    std::string changeable;       // those keys, for messages ("[run] t_end, [run] angle_from")
-    std::string resume_command;   // the command that resumes the run, for the message on a stop signal
+    std::string kind;            // the scene kind
+    std::string settings;        // SceneFile::settings() without the keys a resume may change
+    std::string changeable;      // those keys, for messages ("[run] t_end, [run] angle_from")
+    std::string resume_command;  // the command that resumes the run, for the message on a stop signal
 };
 
 /// A runner's state: a function that lists its members to a StateIO (both directions).

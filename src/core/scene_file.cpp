@@ -26,13 +26,20 @@ std::string sorted_list(const Names& names) {
 /// What a TOML node is, for "expected X, got Y" messages.
 std::string describe_node(const toml::node& node) {
     switch (node.type()) {
-        case toml::node_type::string: return "the string \"" + *node.value<std::string>() + "\"";
-        case toml::node_type::integer: return "the integer " + std::to_string(*node.value<int64_t>());
-        case toml::node_type::floating_point: return "the number " + format_number(*node.value<double>());
-        case toml::node_type::boolean: return *node.value<bool>() ? "true" : "false";
-        case toml::node_type::array: return "an array";
-        case toml::node_type::table: return "a table";
-        default: return "a date or time";
+        case toml::node_type::string:
+            return "the string \"" + *node.value<std::string>() + "\"";
+        case toml::node_type::integer:
+            return "the integer " + std::to_string(*node.value<int64_t>());
+        case toml::node_type::floating_point:
+            return "the number " + format_number(*node.value<double>());
+        case toml::node_type::boolean:
+            return *node.value<bool>() ? "true" : "false";
+        case toml::node_type::array:
+            return "an array";
+        case toml::node_type::table:
+            return "a table";
+        default:
+            return "a date or time";
     }
 }
 
@@ -56,7 +63,7 @@ std::string Range::describe(const std::string& name) const {
 
 struct SceneFile::Impl {
     toml::table root;
-    std::map<std::string, std::set<std::string>> asked;  // keys some accessor asked for
+    std::map<std::string, std::set<std::string>> asked;               // keys some accessor asked for
     std::map<std::pair<std::string, std::string>, std::string> used;  // (section, key) -> the value used, as text
 
     /// Marks (section, key) as known and returns its node, or nullptr if absent.
@@ -67,8 +74,7 @@ struct SceneFile::Impl {
     }
 };
 
-SceneFile::SceneFile(std::unique_ptr<Impl> impl, std::string name)
-    : impl_(std::move(impl)), name_(std::move(name)) {}
+SceneFile::SceneFile(std::unique_ptr<Impl> impl, std::string name) : impl_(std::move(impl)), name_(std::move(name)) {}
 SceneFile::SceneFile(SceneFile&&) noexcept = default;
 SceneFile& SceneFile::operator=(SceneFile&&) noexcept = default;
 SceneFile::~SceneFile() = default;
@@ -89,8 +95,7 @@ SceneFile SceneFile::parse(const std::string& text, const std::string& name) {
         std::string what(e.description());
         for (auto& c : what)
             if (c == '\n') c = ' ';
-        throw InputError(name + ": TOML syntax error at line " +
-                         std::to_string(e.source().begin.line) + ", column " +
+        throw InputError(name + ": TOML syntax error at line " + std::to_string(e.source().begin.line) + ", column " +
                          std::to_string(e.source().begin.column) + ": " + what);
     }
     return SceneFile(std::move(impl), name);
@@ -106,8 +111,7 @@ bool SceneFile::has(const std::string& section, const std::string& key) const {
     return table && table->get(key);
 }
 
-double SceneFile::number(const std::string& section, const std::string& key,
-                         const Range& range) const {
+double SceneFile::number(const std::string& section, const std::string& key, const Range& range) const {
     const auto* node = impl_->lookup(section, key);
     const std::string allowed = "number, " + range.describe(key);
     if (!node) fail(section, key, "missing", allowed);
@@ -117,13 +121,11 @@ double SceneFile::number(const std::string& section, const std::string& key,
     return note(section, key, v);
 }
 
-double SceneFile::number(const std::string& section, const std::string& key, const Range& range,
-                         double fallback) const {
+double SceneFile::number(const std::string& section, const std::string& key, const Range& range, double fallback) const {
     return impl_->lookup(section, key) ? number(section, key, range) : note(section, key, fallback);
 }
 
-long SceneFile::integer(const std::string& section, const std::string& key, long lo,
-                        long hi) const {
+long SceneFile::integer(const std::string& section, const std::string& key, long lo, long hi) const {
     const auto* node = impl_->lookup(section, key);
     const std::string allowed = "integer, " + std::to_string(lo) + " <= " + key + " <= " + std::to_string(hi);
     if (!node) fail(section, key, "missing", allowed);
@@ -133,8 +135,7 @@ long SceneFile::integer(const std::string& section, const std::string& key, long
     return note(section, key, static_cast<long>(v));
 }
 
-long SceneFile::integer(const std::string& section, const std::string& key, long lo, long hi,
-                        long fallback) const {
+long SceneFile::integer(const std::string& section, const std::string& key, long lo, long hi, long fallback) const {
     return impl_->lookup(section, key) ? integer(section, key, lo, hi) : note(section, key, fallback);
 }
 
@@ -145,8 +146,7 @@ bool SceneFile::flag(const std::string& section, const std::string& key, bool fa
     return note(section, key, *node->value<bool>());
 }
 
-std::string SceneFile::choice(const std::string& section, const std::string& key,
-                              const std::vector<std::string>& allowed) const {
+std::string SceneFile::choice(const std::string& section, const std::string& key, const std::vector<std::string>& allowed) const {
     const auto* node = impl_->lookup(section, key);
     if (!node) fail(section, key, "missing", sorted_list(allowed));
     if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), sorted_list(allowed));
@@ -156,22 +156,19 @@ std::string SceneFile::choice(const std::string& section, const std::string& key
     fail(section, key, "unknown value \"" + v + "\"", sorted_list(allowed));
 }
 
-std::string SceneFile::choice(const std::string& section, const std::string& key,
-                              const std::vector<std::string>& allowed,
+std::string SceneFile::choice(const std::string& section, const std::string& key, const std::vector<std::string>& allowed,
                               const std::string& fallback) const {
     return impl_->lookup(section, key) ? choice(section, key, allowed) : note(section, key, fallback);
 }
 
-std::string SceneFile::text(const std::string& section, const std::string& key,
-                            const std::string& fallback) const {
+std::string SceneFile::text(const std::string& section, const std::string& key, const std::string& fallback) const {
     const auto* node = impl_->lookup(section, key);
     if (!node) return note(section, key, fallback);
     if (!node->is_string()) fail(section, key, "expected a string, got " + describe_node(*node), "a string");
     return note(section, key, *node->value<std::string>());
 }
 
-std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key,
-                                       const Range& range) const {
+std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key, const Range& range) const {
     const auto* node = impl_->lookup(section, key);
     const std::string allowed = "non-empty array of numbers, each " + range.describe("value");
     if (!node) fail(section, key, "missing", allowed);
@@ -189,8 +186,8 @@ std::vector<double> SceneFile::numbers(const std::string& section, const std::st
     return note(section, key, out);
 }
 
-std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key,
-                                       const Range& range, const std::vector<double>& fallback) const {
+std::vector<double> SceneFile::numbers(const std::string& section, const std::string& key, const Range& range,
+                                       const std::vector<double>& fallback) const {
     return impl_->lookup(section, key) ? numbers(section, key, range) : note(section, key, fallback);
 }
 
@@ -215,8 +212,7 @@ Expression SceneFile::expression(const std::string& section, const std::string& 
     }
 }
 
-Expression SceneFile::expression(const std::string& section, const std::string& key,
-                                 const std::vector<std::string>& variables,
+Expression SceneFile::expression(const std::string& section, const std::string& key, const std::vector<std::string>& variables,
                                  const std::string& fallback) const {
     if (impl_->lookup(section, key)) return expression(section, key, variables);
     note(section, key, fallback);
@@ -282,26 +278,24 @@ void SceneFile::finish() const {
         const std::size_t line = node.source().begin.line;
         const toml::table* table = node.as_table();
         if (!table) {
-            problems.push_back({line, name_ + ": " + section +
-                                          ": key outside any section (allowed: sections " + sorted_list(sections) + ")"});
+            problems.push_back(
+                {line, name_ + ": " + section + ": key outside any section (allowed: sections " + sorted_list(sections) + ")"});
             continue;
         }
         auto known = impl_->asked.find(section);
         if (known == impl_->asked.end()) {
-            problems.push_back({line, name_ + ": [" + section + "]: unknown section (allowed: " +
-                                          sorted_list(sections) + ")"});
+            problems.push_back({line, name_ + ": [" + section + "]: unknown section (allowed: " + sorted_list(sections) + ")"});
             continue;
         }
         for (const auto& [key, value] : *table) {
             if (known->second.count(std::string(key.str()))) continue;
-            problems.push_back({value.source().begin.line,
-                                name_ + ": [" + section + "] " + std::string(key.str()) +
-                                    ": unknown key (allowed: " + sorted_list(known->second) + ")"});
+            problems.push_back({value.source().begin.line, name_ + ": [" + section + "] " + std::string(key.str()) +
+                                                               ": unknown key (allowed: " + sorted_list(known->second) + ")"});
         }
     }
     if (problems.empty()) return;
-    const auto first = std::min_element(problems.begin(), problems.end(),
-                                        [](const Problem& a, const Problem& b) { return a.line < b.line; });
+    const auto first =
+        std::min_element(problems.begin(), problems.end(), [](const Problem& a, const Problem& b) { return a.line < b.line; });
     throw InputError(first->message);
 }
 

@@ -28,10 +28,10 @@ struct Range {
     bool hi_open = false;
 
     static Range any() { return {}; }
-    static Range closed(double a, double b) { return {a, b, false, false}; }        // [a, b]
-    static Range open(double a, double b) { return {a, b, true, true}; }            // (a, b)
-    static Range left_open(double a, double b) { return {a, b, true, false}; }      // (a, b]
-    static Range right_open(double a, double b) { return {a, b, false, true}; }     // [a, b)
+    static Range closed(double a, double b) { return {a, b, false, false}; }     // [a, b]
+    static Range open(double a, double b) { return {a, b, true, true}; }         // (a, b)
+    static Range left_open(double a, double b) { return {a, b, true, false}; }   // (a, b]
+    static Range right_open(double a, double b) { return {a, b, false, true}; }  // [a, b)
     static Range at_least(double a) { return {a, std::numeric_limits<double>::infinity(), false, false}; }
     static Range above(double a) { return {a, std::numeric_limits<double>::infinity(), true, false}; }
 
@@ -57,32 +57,25 @@ public:
     /// A required number inside `range` (TOML integers are accepted).
     double number(const std::string& section, const std::string& key, const Range& range) const;
     /// An optional number; `fallback` when the key is absent.
-    double number(const std::string& section, const std::string& key, const Range& range,
-                  double fallback) const;
+    double number(const std::string& section, const std::string& key, const Range& range, double fallback) const;
     /// A required integer in [lo, hi].
     long integer(const std::string& section, const std::string& key, long lo, long hi) const;
-    long integer(const std::string& section, const std::string& key, long lo, long hi,
-                 long fallback) const;
+    long integer(const std::string& section, const std::string& key, long lo, long hi, long fallback) const;
     /// An optional boolean.
     bool flag(const std::string& section, const std::string& key, bool fallback) const;
     /// A required string that must be one of `allowed`.
-    std::string choice(const std::string& section, const std::string& key,
-                       const std::vector<std::string>& allowed) const;
-    std::string choice(const std::string& section, const std::string& key,
-                       const std::vector<std::string>& allowed, const std::string& fallback) const;
+    std::string choice(const std::string& section, const std::string& key, const std::vector<std::string>& allowed) const;
+    std::string choice(const std::string& section, const std::string& key, const std::vector<std::string>& allowed,
+                       const std::string& fallback) const;
     /// An optional free-form string (a path, a label).
-    std::string text(const std::string& section, const std::string& key,
-                     const std::string& fallback) const;
+    std::string text(const std::string& section, const std::string& key, const std::string& fallback) const;
     /// A required array of numbers, each inside `range`, with at least one element.
-    std::vector<double> numbers(const std::string& section, const std::string& key,
-                                const Range& range) const;
-    std::vector<double> numbers(const std::string& section, const std::string& key,
-                                const Range& range, const std::vector<double>& fallback) const;
+    std::vector<double> numbers(const std::string& section, const std::string& key, const Range& range) const;
+    std::vector<double> numbers(const std::string& section, const std::string& key, const Range& range,
+                                const std::vector<double>& fallback) const;
     /// A required muparser expression in `variables` (a plain number is accepted too).
-    Expression expression(const std::string& section, const std::string& key,
-                          const std::vector<std::string>& variables) const;
-    Expression expression(const std::string& section, const std::string& key,
-                          const std::vector<std::string>& variables,
+    Expression expression(const std::string& section, const std::string& key, const std::vector<std::string>& variables) const;
+    Expression expression(const std::string& section, const std::string& key, const std::vector<std::string>& variables,
                           const std::string& fallback) const;
 
     /// True if the file has this key (does not count as asking for it).
@@ -98,8 +91,8 @@ public:
     std::string settings(const std::vector<std::string>& ignored = {}) const;
 
     /// Throws the one-line InputError "NAME: [section] key: what (allowed: allowed)".
-    [[noreturn]] void fail(const std::string& section, const std::string& key,
-                           const std::string& what, const std::string& allowed) const;
+    [[noreturn]] void fail(const std::string& section, const std::string& key, const std::string& what,
+                           const std::string& allowed) const;
 
 private:
     struct Impl;

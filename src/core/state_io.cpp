@@ -53,7 +53,8 @@ std::size_t StateIO::count(const char* name, std::size_t element) {
     take(&n, sizeof n);
     if (saved != name) fail("the state holds \"" + saved + "\" where this program reads \"" + name + "\"");
     if (size != element)
-        fail(std::string("\"") + name + "\" has elements of " + std::to_string(size) + " bytes, this program's of " + std::to_string(element));
+        fail(std::string("\"") + name + "\" has elements of " + std::to_string(size) + " bytes, this program's of " +
+             std::to_string(element));
     if (n > (bytes_.size() - at_) / (element ? element : 1)) fail(std::string("the state ends inside \"") + name + "\"");
     counted_ = true;
     return static_cast<std::size_t>(n);
@@ -71,8 +72,7 @@ void StateIO::transfer(const char* name, void* data, std::size_t element, std::s
         bytes_.append(static_cast<const char*>(data), bytes);
         return;
     }
-    if (!counted_ && count(name, element) != n)
-        fail(std::string("\"") + name + "\" does not hold one value");
+    if (!counted_ && count(name, element) != n) fail(std::string("\"") + name + "\" does not hold one value");
     counted_ = false;
     if (bytes) std::memcpy(data, bytes_.data() + at_, bytes);
     at_ += bytes;

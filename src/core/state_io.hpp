@@ -77,7 +77,8 @@ public:
         if constexpr (has_checkpoint<T>::value) {
             value.checkpoint(*this);
         } else if constexpr (is_array<T>::value) {
-            for (std::size_t i = 0; i < value.size(); ++i) (*this)((std::string(name) + "." + std::to_string(i)).c_str(), value[i]);
+            for (std::size_t i = 0; i < value.size(); ++i)
+                (*this)((std::string(name) + "." + std::to_string(i)).c_str(), value[i]);
         } else if constexpr (is_contiguous<T>::value) {
             using Element = std::remove_pointer_t<decltype(value.data())>;
             if (restoring_) value.resize(count(name, sizeof(Element)));
@@ -88,7 +89,8 @@ public:
             if (restoring_) value.resize(static_cast<std::size_t>(n));
             for (auto& element : value) (*this)(name, element);
         } else {
-            static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>, "StateIO: a number, an enum, a container or a class with checkpoint()");
+            static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>,
+                          "StateIO: a number, an enum, a container or a class with checkpoint()");
             transfer(name, &value, sizeof(T), 1);
         }
         return *this;
@@ -111,12 +113,12 @@ private:
     [[noreturn]] void fail(const std::string& what) const;
 
     bool restoring_ = false;
-    BlobStore* blobs_ = nullptr;               // saving
-    const BlobStore* stored_ = nullptr;        // restoring
+    BlobStore* blobs_ = nullptr;         // saving
+    const BlobStore* stored_ = nullptr;  // restoring
     std::string bytes_;
     std::string source_;
-    std::size_t at_ = 0;        // restoring: read position in bytes_
-    bool counted_ = false;      // restoring: the current value's header has been read by count()
+    std::size_t at_ = 0;    // restoring: read position in bytes_
+    bool counted_ = false;  // restoring: the current value's header has been read by count()
 };
 
 }  // namespace granseg

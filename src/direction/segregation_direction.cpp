@@ -11,12 +11,18 @@ namespace granseg {
 
 const char* to_string(DirectionStatus status) {
     switch (status) {
-        case DirectionStatus::ok: return "ok";
-        case DirectionStatus::no_shear: return "no_shear";
-        case DirectionStatus::repeated_eigenvalue: return "repeated_eigenvalue";
-        case DirectionStatus::zero_velocity: return "zero_velocity";
-        case DirectionStatus::equal_candidates: return "equal_candidates";
-        case DirectionStatus::undetermined: return "undetermined";
+        case DirectionStatus::ok:
+            return "ok";
+        case DirectionStatus::no_shear:
+            return "no_shear";
+        case DirectionStatus::repeated_eigenvalue:
+            return "repeated_eigenvalue";
+        case DirectionStatus::zero_velocity:
+            return "zero_velocity";
+        case DirectionStatus::equal_candidates:
+            return "equal_candidates";
+        case DirectionStatus::undetermined:
+            return "undetermined";
     }
     return "?";
 }
@@ -76,9 +82,8 @@ ExtremeEigenpairs extreme_eigenpairs(const Eigen::Matrix3d& strain, const Direct
     return e;
 }
 
-CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vector3d& k_min,
-                                 const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
-                                 const DirectionOptions& options) {
+CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vector3d& k_min, const Eigen::Matrix3d& grad,
+                                 const Eigen::Vector3d& u, const DirectionOptions& options) {
     CandidateChoice c;
     c.d_plus = (k_max + k_min) / std::sqrt(2.0);  // Sect. 2.3, step 3: k_max +/- k_min
     c.d_minus = (k_max - k_min) / std::sqrt(2.0);
@@ -107,8 +112,7 @@ CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vect
 
 SegregationDirection segregation_direction(const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
                                            const DirectionOptions& options) {
-    if (!grad.allFinite() || !u.allFinite())
-        throw InputError("segregation_direction: grad and u must be finite");
+    if (!grad.allFinite() || !u.allFinite()) throw InputError("segregation_direction: grad and u must be finite");
     SegregationDirection r;
     r.strain = strain_rate(grad);
     r.gamma_dot = shear_rate(grad);

@@ -72,14 +72,14 @@ struct ExtremeEigenpairs {
 /// Step 3 alone: which candidate, and why.
 struct CandidateChoice {
     DirectionStatus status = DirectionStatus::ok;
-    Eigen::Vector3d d_plus, d_minus;            // (k_max +/- k_min)/sqrt(2)
+    Eigen::Vector3d d_plus, d_minus;                // (k_max +/- k_min)/sqrt(2)
     Eigen::Vector3d d_s = Eigen::Vector3d::Zero();  // the chosen one, sign-normalised; 0 if undetermined
 };
 
 /// Everything the procedure computes at one point.
 struct SegregationDirection {
     DirectionStatus status = DirectionStatus::ok;
-    Eigen::Vector3d d_s = Eigen::Vector3d::Zero();  // unit, or 0 where there is no segregation
+    Eigen::Vector3d d_s = Eigen::Vector3d::Zero();     // unit, or 0 where there is no segregation
     Eigen::Matrix3d strain = Eigen::Matrix3d::Zero();  // kappa^s (eq. 13)
     ExtremeEigenpairs eigen;
     Eigen::Vector3d d_plus = Eigen::Vector3d::Zero(), d_minus = Eigen::Vector3d::Zero();  // candidates
@@ -102,9 +102,8 @@ double shear_rate(const Eigen::Matrix3d& grad);
 ExtremeEigenpairs extreme_eigenpairs(const Eigen::Matrix3d& strain, const DirectionOptions& options = {});
 
 /// Step 3: the candidate more orthogonal to u (gradient rule on a tie, see above).
-CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vector3d& k_min,
-                                 const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,
-                                 const DirectionOptions& options = {});
+CandidateChoice choose_candidate(const Eigen::Vector3d& k_max, const Eigen::Vector3d& k_min, const Eigen::Matrix3d& grad,
+                                 const Eigen::Vector3d& u, const DirectionOptions& options = {});
 
 /// The whole procedure. Throws InputError if grad or u has a non-finite entry.
 SegregationDirection segregation_direction(const Eigen::Matrix3d& grad, const Eigen::Vector3d& u,

@@ -18,9 +18,9 @@
 namespace granseg {
 
 const char* flow_stage_name(FlowStage stage) {
-    static const char* const names[kFlowStages] = {"closures",       "step_size",      "forces", "predictor",
-                                                   "viscosity",      "pressure_faces", "pressure_solve", "repeat",
-                                                   "transport",      "increments",     "temperature"};
+    static const char* const names[kFlowStages] = {"closures",  "step_size",      "forces",         "predictor",
+                                                   "viscosity", "pressure_faces", "pressure_solve", "repeat",
+                                                   "transport", "increments",     "temperature"};
     return names[static_cast<int>(stage)];
 }
 
@@ -58,8 +58,8 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
 
     const std::size_t cells = g.cells();
     for (auto* f : {&state_.Phi, &state_.E, &state_.T, &Phi_before_, &closures_.p, &closures_.c, &closures_.eta,
-                    &closures_.lambda, &closures_.epsPhi, &closures_.Phi_rcp, &closures_.Phi_co, &potential_.cell,
-                    &E_start_, &mass_change_, &dp_, &dust_scale_, &Phi_after_, &line_rhs_, &heat_})
+                    &closures_.lambda, &closures_.epsPhi, &closures_.Phi_rcp, &closures_.Phi_co, &potential_.cell, &E_start_,
+                    &mass_change_, &dp_, &dust_scale_, &Phi_after_, &line_rhs_, &heat_})
         f->assign(cells, 0.0);
     for (int b = 0; b < 3; ++b) {
         state_.m[b].assign(cells, 0.0);
@@ -82,8 +82,8 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         for (auto* f : {&F.mass, &F.energy, &F.mom_below, &F.p, &F.speed, &potential_.face[a]}) f->assign(faces, 0.0);
         for (int b = 0; b < 3; ++b) F.mom[b].assign(faces, 0.0);
         AxisPressureFaces& P = pressure_[a];
-        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.value_lo,
-                        &P.value_hi, &P.donor, &P.flux})
+        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.value_lo, &P.value_hi,
+                        &P.donor, &P.flux})
             f->assign(faces, 0.0);
         P.reversed.assign(faces, 0);
     }
@@ -114,18 +114,18 @@ void FlowSolver::set_phi_hat(std::vector<double> phi_hat) {
         throw InputError("FlowSolver::set_phi_hat: need one value per grid cell");
     for (std::size_t c : mesh_.inside_cells)
         if (!phi_hat.empty() && !(phi_hat[c] >= 0.0 && phi_hat[c] <= 1.0))
-            throw InvariantError("flow: phi_hat = " + format_number(phi_hat[c]) + " outside [0, 1] at cell " +
-                                 std::to_string(c));
+            throw InvariantError("flow: phi_hat = " + format_number(phi_hat[c]) + " outside [0, 1] at cell " + std::to_string(c));
     // The state keeps Phi < Phi_rcp (header comment): a mixture change that moves Phi_rcp to or
     // below a cell's Phi is the mixture's doing, not the flow's.
     if (!state_.Phi.empty())
         for (std::size_t c : mesh_.inside_cells) {
             const double x = phi_hat.empty() ? settings_.phi_hat : phi_hat[c], rcp = material_.packing.Phi_rcp(x);
             if (!(state_.Phi[c] < rcp))
-                throw InvariantError("flow: the mixture change to phi_hat = " + format_number(x) + " at x = " +
-                                     format_number(mesh_.position[0][c]) + ", z = " + format_number(mesh_.position[2][c]) +
-                                     " moves Phi_rcp to " + format_number(rcp, 8) + ", at or below the cell's Phi = " +
-                                     format_number(state_.Phi[c], 8) + " (t = " + format_number(t_) + " s)");
+                throw InvariantError("flow: the mixture change to phi_hat = " + format_number(x) +
+                                     " at x = " + format_number(mesh_.position[0][c]) +
+                                     ", z = " + format_number(mesh_.position[2][c]) + " moves Phi_rcp to " +
+                                     format_number(rcp, 8) + ", at or below the cell's Phi = " + format_number(state_.Phi[c], 8) +
+                                     " (t = " + format_number(t_) + " s)");
         }
     phi_hat_ = std::move(phi_hat);
 }
@@ -234,16 +234,17 @@ void FlowSolver::check_invariants() const {
                std::isfinite(u[0][c]) && std::isfinite(u[1][c]) && std::isfinite(u[2][c]);
     };
     const long bad = parallel_fold(
-        mesh_.parallel, mesh_.inside_cells.size(), 0L, [&](long& count, std::size_t q) { count += ok(mesh_.inside_cells[q]) ? 0 : 1; },
-        std::plus<long>());
+        mesh_.parallel, mesh_.inside_cells.size(), 0L,
+        [&](long& count, std::size_t q) { count += ok(mesh_.inside_cells[q]) ? 0 : 1; }, std::plus<long>());
     if (bad == 0) return;
     for (std::size_t c : mesh_.inside_cells)
         if (!ok(c))
-            throw InvariantError("flow: invalid state at x = " + format_number(mesh_.position[0][c]) + ", z = " +
-                                 format_number(mesh_.position[2][c]) + ", t = " + format_number(t_) + " s after a flow step: Phi = " +
-                                 format_number(Phi[c], 8) + " (Phi_rcp " + format_number(rcp[c], 8) + "), T = " + format_number(T[c]) + ", u = (" +
-                                 format_number(u[0][c]) + ", " + format_number(u[1][c]) + ", " +
-                                 format_number(u[2][c]) + ") (" + std::to_string(bad) + " cells)");
+            throw InvariantError("flow: invalid state at x = " + format_number(mesh_.position[0][c]) +
+                                 ", z = " + format_number(mesh_.position[2][c]) + ", t = " + format_number(t_) +
+                                 " s after a flow step: Phi = " + format_number(Phi[c], 8) + " (Phi_rcp " +
+                                 format_number(rcp[c], 8) + "), T = " + format_number(T[c]) + ", u = (" + format_number(u[0][c]) +
+                                 ", " + format_number(u[1][c]) + ", " + format_number(u[2][c]) + ") (" + std::to_string(bad) +
+                                 " cells)");
 }
 
 }  // namespace granseg

@@ -22,8 +22,9 @@
 //      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow_diffusion/temperature.hpp).
 // Explicit step (time_stepping = "explicit", explicit_step):
 //   forces: gravity at t^n (dt follows from these forces); per active axis the face potentials and
-//       the unsupported loads (flow_faces/loads.hpp) and the HLLC face fluxes with hydrostatic reconstruction (flow_faces/convection.hpp, flow_faces/hllc.hpp);
-//       the effective pressure of eta, lambda, eps Phi (flow_fields/primitives.hpp);
+//       the unsupported loads (flow_faces/loads.hpp) and the HLLC face fluxes with hydrostatic reconstruction
+//       (flow_faces/convection.hpp, flow_faces/hllc.hpp); the effective pressure of eta, lambda, eps Phi
+//       (flow_fields/primitives.hpp);
 //   step_size: dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0
 //       and T, u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
 //       (flow/time_step.hpp);
@@ -159,8 +160,7 @@ public:
 
     /// Sets the state (Phi >= 0, T >= 0, finite; outside cells are ignored). Throws InvariantError
     /// if a cell has Phi >= Phi_rcp.
-    void set_state(const std::vector<double>& Phi, const std::array<std::vector<double>, 3>& u,
-                   const std::vector<double>& T);
+    void set_state(const std::vector<double>& Phi, const std::array<std::vector<double>, 3>& u, const std::vector<double>& T);
     /// Small-particle share phi_hat = phi/Phi per cell (same layout, values in [0, 1], copied):
     /// Phi_rcp and Phi_co then follow it cell by cell from the next step on. An empty vector
     /// returns to the uniform settings.phi_hat. InvariantError, naming the mixture change, if the
@@ -208,6 +208,7 @@ private:
     public:
         Stopwatch(FlowTimers& timers, FlowStage stage);
         ~Stopwatch();
+
     private:
         double& account_;
         std::chrono::steady_clock::time_point start_;
@@ -293,21 +294,21 @@ private:
     // and reads it):
     std::array<std::vector<double>, 3> m_start_, u_start_;  // Phi u and u at t^n, for a repeat
     std::vector<double> E_start_;                           // Phi T at t^n, for a repeat
-    std::array<std::vector<double>, 3> force_part_;  // A: velocity change of the predictor's forces, before viscosity
-    std::array<std::vector<double>, 3> u_star_;      // u*: the predictor's velocity after viscosity
-    std::vector<double> mass_change_;  // r_c: mass change of the explicit face fluxes (pressure equation)
-    std::vector<double> dp_;           // pressure increments of the last solve (its warm start next time)
-    std::vector<double> dust_scale_;   // factor on a dust cell's outgoing mass fluxes (1 elsewhere)
-    std::vector<double> Phi_after_;    // Phi at the end of the step (shares of the increment force)
-    std::array<std::vector<double>, 3> velocity_change_;  // u - u* after transport, then diffused
-    FlowState increment_;            // split viscosity's state for diffuse_change: Phi at t^n and du
-    std::vector<double> line_rhs_;   // right-hand side of the split viscosity's line solves (swapped with u)
-    std::vector<double> heat_;       // viscous heating H of the temperature step
+    std::array<std::vector<double>, 3> force_part_;         // A: velocity change of the predictor's forces, before viscosity
+    std::array<std::vector<double>, 3> u_star_;             // u*: the predictor's velocity after viscosity
+    std::vector<double> mass_change_;                       // r_c: mass change of the explicit face fluxes (pressure equation)
+    std::vector<double> dp_;                                // pressure increments of the last solve (its warm start next time)
+    std::vector<double> dust_scale_;                        // factor on a dust cell's outgoing mass fluxes (1 elsewhere)
+    std::vector<double> Phi_after_;                         // Phi at the end of the step (shares of the increment force)
+    std::array<std::vector<double>, 3> velocity_change_;    // u - u* after transport, then diffused
+    FlowState increment_;                                   // split viscosity's state for diffuse_change: Phi at t^n and du
+    std::vector<double> line_rhs_;  // right-hand side of the split viscosity's line solves (swapped with u)
+    std::vector<double> heat_;      // viscous heating H of the temperature step
     mutable std::array<std::vector<double>, 9> grad_;
     mutable bool gradient_valid_ = false;
     DiffusionLines lines_;
     TemperatureSolver temperature_;
-    std::optional<CoupledViscosity> coupled_;  // set up when the settings ask for it
+    std::optional<CoupledViscosity> coupled_;     // set up when the settings ask for it
     std::optional<MusclHancock> reconstruction_;  // transport = muscl: the face values of Phi
     FlowTimers timers_;
     FlowCounters counters_;

@@ -104,13 +104,12 @@ void FlowSolver::face_velocities(double dt) {
     {
         Stopwatch watch(timers_, FlowStage::pressure_faces);
         for (int a = 0; a < 3; ++a)
-            if (mesh_.active[a])
-                face_velocity_predictor(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
+            if (mesh_.active[a]) face_velocity_predictor(mesh_, settings_, a, dt, state_, closures_, force_part_, pressure_[a]);
     }
     if (!reconstruction_) return;
     Stopwatch watch(timers_, FlowStage::transport);
-    reconstruction_->face_values(state_.Phi, {&pressure_[0].predictor, &pressure_[1].predictor, &pressure_[2].predictor},
-                                 dt, MusclHancock::Form::conservative);
+    reconstruction_->face_values(state_.Phi, {&pressure_[0].predictor, &pressure_[1].predictor, &pressure_[2].predictor}, dt,
+                                 MusclHancock::Form::conservative);
 }
 
 void FlowSolver::face_donors_and_change(double dt) {

@@ -18,8 +18,8 @@ namespace {
 /// outflow(c, out) its outflow rate for an outflow out > 0 (face_outflow with 1/h), and the
 /// compaction rate is its net inflow over the gap Phi_rcp - Phi.
 template <class Wave, class Outflow>
-StepRates largest_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
-                        const FlowFaces& faces, Wave&& wave, Outflow&& outflow) {
+StepRates largest_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures, const FlowFaces& faces,
+                        Wave&& wave, Outflow&& outflow) {
     const std::size_t nx = mesh.grid.n[0];
     const double *Phi = state.Phi.data(), *rcp = closures.Phi_rcp.data();
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
@@ -48,15 +48,14 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
     const AxisWeights inv_h = axis_weights(mesh);
     const double* Phi = state.Phi.data();
     auto wave = [&](std::size_t, int i, const AxisRow* ar) {
-        return sum_over_axes(inv_h, i, ar,
-                             [&](int a, std::size_t fl, std::size_t fu) { return std::max(S[a][fl], S[a][fu]); });
+        return sum_over_axes(inv_h, i, ar, [&](int a, std::size_t fl, std::size_t fu) { return std::max(S[a][fl], S[a][fu]); });
     };
     auto outflow = [&](std::size_t c, double out) { return Phi[c] > 0.0 ? out / Phi[c] : INFINITY; };
     return largest_rates(mesh, state, closures, faces, wave, outflow);
 }
 
-StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
-                              const FlowFaces& faces, bool first) {
+StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures, const FlowFaces& faces,
+                              bool first) {
     const AxisFields S = axis_fields(faces, &AxisFaces::speed);
     const AxisWeights inv_h = axis_weights(mesh);
     const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
@@ -78,8 +77,8 @@ const char* step_bound_name(StepBound bound) {
     return names[static_cast<int>(bound)];
 }
 
-StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
-                   const StepRates& rates, const FlowState& state, const CellClosures& cl) {
+StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end, const StepRates& rates,
+                   const FlowState& state, const CellClosures& cl) {
     double dt = std::min(settings.dt_max, t_end - t);
     const double dt_cfl = rates.waves > 0.0 ? settings.cfl / rates.waves : INFINITY;
     const double dt_outflow = rates.outflow > 0.0 ? kOutflowFraction / rates.outflow : INFINITY;
@@ -94,18 +93,20 @@ StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t,
         for (std::size_t c : mesh.inside_cells)
             if (cl.c[c] > c_max) c_max = cl.c[c], Phi_at = state.Phi[c];
         const std::string cause =
-            bound == StepBound::compaction ? "the compaction bound: the bed is compacted towards Phi_rcp faster than this resolution can follow"
-            : bound == StepBound::outflow  ? "the outflow bound: a cell loses more than its mass (outflow rate " + format_number(rates.outflow) + " 1/s)"
-                                           : "the CFL condition";
-        throw InvariantError("flow: time step " + format_number(dt) + " s fell below dt_min = " +
-                             format_number(settings.dt_min) + " s at t = " + format_number(t) + " s, set by " + cause +
-                             " (largest sound speed c = " + format_number(c_max) + " m/s at Phi = " + format_number(Phi_at, 8) + ")");
+            bound == StepBound::compaction
+                ? "the compaction bound: the bed is compacted towards Phi_rcp faster than this resolution can follow"
+            : bound == StepBound::outflow
+                ? "the outflow bound: a cell loses more than its mass (outflow rate " + format_number(rates.outflow) + " 1/s)"
+                : "the CFL condition";
+        throw InvariantError("flow: time step " + format_number(dt) + " s fell below dt_min = " + format_number(settings.dt_min) +
+                             " s at t = " + format_number(t) + " s, set by " + cause + " (largest sound speed c = " +
+                             format_number(c_max) + " m/s at Phi = " + format_number(Phi_at, 8) + ")");
     }
     return {dt, bound};
 }
 
-bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before,
-                        const CellClosures& cl, const FlowFaces& faces) {
+bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before, const CellClosures& cl,
+                        const FlowFaces& faces) {
     const AxisFields M = axis_fields(faces, &AxisFaces::mass);
     const AxisWeights inv_h = axis_weights(mesh);
     auto row = [&](long& bad, std::size_t r) {

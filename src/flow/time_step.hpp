@@ -40,8 +40,7 @@ struct StepRates {
 };
 
 /// The rates of the explicit step from the face fluxes and speeds of every active axis.
-StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
-                              const FlowFaces& faces);
+StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures, const FlowFaces& faces);
 
 /// The rates of the semi-implicit step: material speeds |u_n| of the cells and |U| (faces.speed)
 /// of the last step's faces, twice the outflow rate of the last step's mass fluxes, without
@@ -49,8 +48,8 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
 /// compaction rate. The first
 /// step also counts the sound speed, as the explicit step does: it starts from a state that need
 /// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step).
-StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures,
-                              const FlowFaces& faces, bool first);
+StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures, const FlowFaces& faces,
+                              bool first);
 
 /// Largest ratio of a semi-implicit step to the one before it.
 constexpr double kStepGrowth = 2.0;
@@ -70,14 +69,14 @@ struct StepSize {
 /// dt from the rates (cfl on the wave rate, kOutflowFraction and kCompactionFraction on the
 /// others), dt_max and t_end - t, and which of them set it. Throws InvariantError naming the bound
 /// that set it if dt falls below dt_min before t_end.
-StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end,
-                   const StepRates& rates, const FlowState& state, const CellClosures& closures);
+StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end, const StepRates& rates,
+                   const FlowState& state, const CellClosures& closures);
 
 /// Whether the fluxes of a step of length dt keep every cell within the bounds of the explicit
 /// step: outflow at most kOutflowFraction of Phi_before, net inflow at most kCompactionFraction of
 /// the gap Phi_rcp - Phi_before (the implicit pressure alone would let one step close almost all
 /// of it, and the next start from a pressure near the divergence).
-bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before,
-                        const CellClosures& closures, const FlowFaces& faces);
+bool step_within_bounds(const FlowMesh& mesh, double dt, const std::vector<double>& Phi_before, const CellClosures& closures,
+                        const FlowFaces& faces);
 
 }  // namespace granseg

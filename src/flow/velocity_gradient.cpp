@@ -24,8 +24,7 @@ void velocity_gradient(const FlowMesh& mesh, const FlowSettings& settings, const
                         if (kind[f] == kInterior) return Phi[c + offset] > Phi_vac ? u[b][c + offset] : u[b][c];
                         return 2.0 * wall_velocity(mesh.grid, walls, a, side, f, b) - u[b][c];
                     };
-                    grad[3 * b + a][c] =
-                        mesh.active[a] ? (value(fu, ar.hi_at(i), 1) - value(fl, ar.lo_at(i), 0)) * inv_2h : 0.0;
+                    grad[3 * b + a][c] = mesh.active[a] ? (value(fu, ar.hi_at(i), 1) - value(fl, ar.lo_at(i), 0)) * inv_2h : 0.0;
                 }
             }
         }

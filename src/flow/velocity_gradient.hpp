@@ -1,4 +1,5 @@
-// The cell velocity gradient handed to the segregation solver (docs/flow_solver.md Sect. 2, "Hand-over to the segregation solver").
+// The cell velocity gradient handed to the segregation solver (docs/flow_solver.md Sect. 2, "Hand-over to the segregation
+// solver").
 //
 //   solves      nothing: d u_b/d x_a by central differences in every inside cell
 //   inputs      Phi, u per cell, the velocities of the domain-boundary walls

@@ -83,8 +83,7 @@ void CoupledViscosity::apply(const FlowMesh& mesh, const FlowSettings& settings,
         simplicial_.factorize(pattern_.matrix);
         factored = simplicial_.info() == Eigen::Success;
     }
-    if (!factored)
-        throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
+    if (!factored) throw InvariantError("flow: the coupled viscosity matrix could not be factorised (not positive definite)");
     const Eigen::MatrixXd u = solve_columns(mesh.parallel);
     for (std::size_t c : mesh.inside_cells)
         for (int b = 0; b < 3; ++b) {

@@ -61,7 +61,7 @@ private:
     Eigen::MatrixXd rhs_;
     Eigen::VectorXd mass_;  // per unknown: the last apply()'s Phi, 0 in empty cells (identity rows)
     Factorisation factorisation_;
-    SupernodalLDLT ldlt_;                      // factorisation_ == supernodal
+    SupernodalLDLT ldlt_;                       // factorisation_ == supernodal
     Eigen::SimplicialLDLT<Matrix> simplicial_;  // factorisation_ == simplicial
 };
 

@@ -25,8 +25,8 @@ class DiffusionLines {
 public:
     explicit DiffusionLines(const FlowMesh& mesh);
     /// Builds and factorises the line systems of `axis` (see the header comment).
-    void factor(const FlowMesh& mesh, int axis, double r, const std::vector<double>& Phi,
-                const std::vector<double>& kappa, bool no_slip, double Phi_vacuum);
+    void factor(const FlowMesh& mesh, int axis, double r, const std::vector<double>& Phi, const std::vector<double>& kappa,
+                bool no_slip, double Phi_vacuum);
     /// Overwrites x (the right-hand side on entry) with the solution of the last factor().
     void solve(std::vector<double>& x) const { lines_.solve(x); }
 

@@ -38,8 +38,8 @@
 namespace granseg {
 
 /// heat = H per cell (see above) from the velocities of `state` and eta of `closures`.
-void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const CellClosures& closures,
-                     const FlowState& state, std::vector<double>& heat);
+void viscous_heating(const FlowMesh& mesh, const WallVelocities& walls, const CellClosures& closures, const FlowState& state,
+                     std::vector<double>& heat);
 
 class TemperatureSolver {
 public:
@@ -53,7 +53,7 @@ public:
 
 private:
     using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-    CellPattern<Matrix> pattern_;  // inside cells and interior faces; values rewritten each step
+    CellPattern<Matrix> pattern_;       // inside cells and interior faces; values rewritten each step
     Eigen::VectorXd rhs_, T_, change_;  // per row: right-hand side, T, the change of T (the next guess)
 
 public:

@@ -3,8 +3,7 @@
 namespace granseg {
 
 void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
-                        const std::vector<double>& eta_in, DiffusionLines& lines, std::vector<double>& work,
-                        FlowState& state) {
+                        const std::vector<double>& eta_in, DiffusionLines& lines, std::vector<double>& work, FlowState& state) {
     const double Phi_vac = settings.Phi_vacuum;
     for (int a = 0; a < 3; ++a) {
         if (!mesh.active[a]) continue;

@@ -26,7 +26,6 @@ namespace granseg {
 
 /// Updates u and Phi u of `state` (reads Phi, u); `work` holds one value per cell.
 void implicit_viscosity(const FlowMesh& mesh, const FlowSettings& settings, const WallVelocities& walls, double dt,
-                        const std::vector<double>& eta, DiffusionLines& lines, std::vector<double>& work,
-                        FlowState& state);
+                        const std::vector<double>& eta, DiffusionLines& lines, std::vector<double>& work, FlowState& state);
 
 }  // namespace granseg

@@ -13,8 +13,8 @@ namespace granseg {
 // Longer than most functions, for a reason: the face kernel is a lambda over the raw pointers set
 // up here, inlined into the loops of both face layouts below (x faces inside rows, y and z faces
 // between rows); split, those pointers would travel as a dozen parameters.
-void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl,
-                      const Potential& potential, const AxisLoads& loads, AxisFaces& out) {
+void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl, const Potential& potential,
+                      const AxisLoads& loads, AxisFaces& out) {
     const Grid& grid = mesh.grid;
     const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
     const std::size_t nx = grid.n[0], ny = grid.n[1];
@@ -70,19 +70,19 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
     // lower neighbour along the axis.
     const std::size_t layers = n_a + 1, others = a == 1 ? grid.n[2] : ny;
     parallel_for_pairs(mesh.parallel, layers, others, [&](std::size_t l, std::size_t o) {
-            const std::size_t j_hi = a == 1 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
-            const std::size_t k_hi = a == 2 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
-            const std::size_t j_lo = a == 1 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
-            const std::size_t k_lo = a == 2 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
-            const std::size_t r_hi = j_hi + ny * k_hi, r_lo = j_lo + ny * k_lo;
-            const int i0 = std::min(mesh.row_lo[r_hi], mesh.row_lo[r_lo]), i1 = std::max(mesh.row_hi[r_hi], mesh.row_hi[r_lo]);
-            const std::size_t f0 = a == 1 ? nx * (l + (ny + 1) * o) : nx * (o + ny * l);
-            for (int i = i0; i < i1; ++i) face(f0 + i, nx * r_lo + i, nx * r_hi + i);
-        });
+        const std::size_t j_hi = a == 1 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
+        const std::size_t k_hi = a == 2 ? (l < static_cast<std::size_t>(n_a) ? l : periodic ? 0 : l - 1) : o;
+        const std::size_t j_lo = a == 1 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
+        const std::size_t k_lo = a == 2 ? (l > 0 ? l - 1 : periodic ? n_a - 1 : 0) : o;
+        const std::size_t r_hi = j_hi + ny * k_hi, r_lo = j_lo + ny * k_lo;
+        const int i0 = std::min(mesh.row_lo[r_hi], mesh.row_lo[r_lo]), i1 = std::max(mesh.row_hi[r_hi], mesh.row_hi[r_lo]);
+        const std::size_t f0 = a == 1 ? nx * (l + (ny + 1) * o) : nx * (o + ny * l);
+        for (int i = i0; i < i1; ++i) face(f0 + i, nx * r_lo + i, nx * r_hi + i);
+    });
 }
 
-void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
-                     double t, double dt, const FlowFaces& faces, FlowState& state) {
+void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source, double t,
+                     double dt, const FlowFaces& faces, FlowState& state) {
     const Vec3 g = frame.gravity_at(t);
     Vec3 g_source{};
     for (int a = 0; a < 3; ++a) g_source[a] = mesh.active[a] && !mesh.grid.periodic[a] ? 0.0 : g[a];
@@ -126,8 +126,7 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
     });
 }
 
-void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
-                      FlowState& state) {
+void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces, FlowState& state) {
     Frame still;  // no gravity and no rotation: the update of the fluxes alone
     still.gravity = 0.0;
     explicit_update(mesh, settings, still, FlowSource{}, 0.0, dt, faces, state);
@@ -142,13 +141,16 @@ void apply_mass_fluxes(const FlowMesh& mesh, const FaceFields& M, double dt, std
     AxisWeights inv_h = axis_weights(mesh);
     AxisFields fields{};
     for (int a = 0; a < 3; ++a) {
-        if (M[a].empty()) inv_h[a] = 0.0;  // nothing along this axis
-        else if (M[a].size() != grid.faces(a)) throw InputError("apply_mass_fluxes: M needs one value per face");
+        if (M[a].empty())
+            inv_h[a] = 0.0;  // nothing along this axis
+        else if (M[a].size() != grid.faces(a))
+            throw InputError("apply_mass_fluxes: M needs one value per face");
         fields[a] = M[a].data();
     }
     if (Phi.size() != grid.cells()) throw InputError("apply_mass_fluxes: Phi needs one value per cell");
     double* out = Phi.data();
-    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { out[c] = mass_balance(out[c], dt, fields, inv_h, i, ar); });
+    mesh.parallel_for_inside_cells(
+        [&](std::size_t c, int i, const AxisRow* ar) { out[c] = mass_balance(out[c], dt, fields, inv_h, i, ar); });
 }
 
 }  // namespace granseg

@@ -25,21 +25,20 @@ namespace granseg {
 /// Mass, momentum and energy fluxes, face pressure p* and fastest wave speed on every face of
 /// `axis` (HLLC between the hydrostatically reconstructed states of the two cells). On walls the
 /// mass, energy and tangential momentum fluxes are exactly 0.
-void hllc_face_fluxes(const FlowMesh& mesh, int axis, const FlowState& state, const CellClosures& closures,
-                      const Potential& psi, const AxisLoads& loads, AxisFaces& faces);
+void hllc_face_fluxes(const FlowMesh& mesh, int axis, const FlowState& state, const CellClosures& closures, const Potential& psi,
+                      const AxisLoads& loads, AxisFaces& faces);
 
 /// Phi = Phi - dt sum_axis (M[upper] - M[lower])/h_axis (the coupling identity), the same for
 /// Phi u and Phi T with their fluxes; then gravity on the Phi at the start along inactive or
 /// periodic axes, the sources (if any) at time t, and Coriolis du/dt = 2 omega (u_z, -u_x) as a
 /// rotation of (u_x, u_z) by -2 omega dt (exact); finally u and T of the new state (Phi u is left
 /// unrotated: the implicit viscosity step rebuilds it from u).
-void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source,
-                     double t, double dt, const FlowFaces& faces, FlowState& state);
+void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source, double t,
+                     double dt, const FlowFaces& faces, FlowState& state);
 
 /// The update of explicit_update() by the fluxes alone (no body force, source or rotation): the
 /// semi-implicit step's transport, whose predictor already applied the forces.
-void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces,
-                      FlowState& state);
+void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces, FlowState& state);
 
 /// Phi = Phi - dt div M in every inside cell (mass_balance, flow_fields/face_balance.hpp): what a consumer
 /// of the flow's hand-over (flow/flow_solver.hpp) gets bit for bit as the flow's Phi after the step,

@@ -62,8 +62,7 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
 // the sweep direction set up here, inlined into the loops of both layouts below (along x inside
 // rows, along y and z across rows in blocks of columns).
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
-                       const FlowState& state, const CellClosures& closures, const Potential& potential,
-                       AxisLoads& loads) {
+                       const FlowState& state, const CellClosures& closures, const Potential& potential, AxisLoads& loads) {
     const Grid& grid = mesh.grid;
     const Vec3 g = frame.gravity_at(t);
     const double g_a = !grid.periodic[a] ? g[a] : 0.0;
@@ -127,16 +126,16 @@ void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const
     const int n_a = grid.n[a];
     const std::size_t others = a == 1 ? grid.n[2] : ny, blocks = (nx + 31) / 32;
     parallel_for_pairs(mesh.parallel, others, blocks, [&](std::size_t o, std::size_t blk) {
-            for (int q = 0; q < n_a; ++q) {
-                const int layer = dir < 0 ? n_a - 1 - q : q;
-                const std::size_t r = a == 1 ? layer + ny * o : o + ny * layer;
-                const AxisRow ar = mesh.axis_row(a, r);
-                const std::size_t i1 = std::min(nx, 32 * blk + 32);
+        for (int q = 0; q < n_a; ++q) {
+            const int layer = dir < 0 ? n_a - 1 - q : q;
+            const std::size_t r = a == 1 ? layer + ny * o : o + ny * layer;
+            const AxisRow ar = mesh.axis_row(a, r);
+            const std::size_t i1 = std::min(nx, 32 * blk + 32);
 #pragma omp simd
-                for (std::size_t i = 32 * blk; i < i1; ++i)
-                    visit(nx * r + i, ar.face0 + i, ar.face0 + i + ar.face_step, ar.lo, ar.hi);
-            }
-        });
+            for (std::size_t i = 32 * blk; i < i1; ++i)
+                visit(nx * r + i, ar.face0 + i, ar.face0 + i + ar.face_step, ar.lo, ar.hi);
+        }
+    });
 }
 
 }  // namespace granseg

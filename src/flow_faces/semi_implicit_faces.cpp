@@ -33,9 +33,7 @@ double mass_share(double Phi_lo, double Phi_hi) {
 }
 
 /// The face pressure that gives each cell the share Phi_cell/(Phi_lo + Phi_hi) of P_lo - P_hi.
-double face_pressure(double Phi_lo, double Phi_hi, double P_lo, double P_hi) {
-    return mass_mean(Phi_hi, Phi_lo, P_lo, P_hi);
-}
+double face_pressure(double Phi_lo, double Phi_hi, double P_lo, double P_hi) { return mass_mean(Phi_hi, Phi_lo, P_lo, P_hi); }
 }  // namespace
 
 void pressure_faces(const FlowMesh& mesh, int a, double gravity, const FlowState& state, const CellClosures& cl,
@@ -88,9 +86,8 @@ bool open_face(const MeshFace& F, const double* Phi, double Phi_vac) {
 }
 }  // namespace
 
-void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt,
-                             const FlowState& state, const CellClosures& closures,
-                             const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf) {
+void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int a, double dt, const FlowState& state,
+                             const CellClosures& closures, const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf) {
     const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
     const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
     const double* Phi_co = closures.Phi_co.data();
@@ -148,8 +145,7 @@ void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& 
     const AxisFields flux = axis_fields(pf, &AxisPressureFaces::flux);
     const AxisWeights rate = axis_weights(mesh, dt);
     double* r = change.data();
-    mesh.parallel_for_inside_cells(
-        [&](std::size_t c, int i, const AxisRow* ar) { r[c] = -face_balance(flux, rate, i, ar); });
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) { r[c] = -face_balance(flux, rate, i, ar); });
 }
 
 long mark_reversed_faces(const FlowMesh& mesh, int a, const AxisFaces& faces, AxisPressureFaces& pf) {
@@ -163,9 +159,8 @@ long mark_reversed_faces(const FlowMesh& mesh, int a, const AxisFaces& faces, Ax
     return marked;
 }
 
-void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const FlowState& state,
-                               const CellClosures& closures, const AxisPressureFaces& pf, const std::vector<double>& dp,
-                               AxisFaces& out) {
+void corrected_face_velocities(const FlowMesh& mesh, int a, double dt, const FlowState& state, const CellClosures& closures,
+                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& out) {
     const double h = mesh.grid.h[a], *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
     mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;

@@ -68,15 +68,15 @@ class MusclHancock;
 
 /// Per axis and face, what the semi-implicit fluxes are built from.
 struct AxisPressureFaces {
-    std::vector<double> p_lo, p_hi;        // reconstructed pressures p' of the lower and upper cell
-    std::vector<double> corr_lo, corr_hi;  // p - p' of the two cells
-    std::vector<double> force;             // D, limited on dilute faces
-    std::vector<double> predictor;         // U* for the current dt
-    std::vector<double> coupling;          // K
+    std::vector<double> p_lo, p_hi;          // reconstructed pressures p' of the lower and upper cell
+    std::vector<double> corr_lo, corr_hi;    // p - p' of the two cells
+    std::vector<double> force;               // D, limited on dilute faces
+    std::vector<double> predictor;           // U* for the current dt
+    std::vector<double> coupling;            // K
     std::vector<double> value_lo, value_hi;  // the Phi the lower / upper cell gives the face (its own, or reconstructed)
-    std::vector<double> donor;             // Phi_d
-    std::vector<double> flux;              // the explicit flux M_x = Phi_d U*
-    std::vector<unsigned char> reversed;   // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
+    std::vector<double> donor;               // Phi_d
+    std::vector<double> flux;                // the explicit flux M_x = Phi_d U*
+    std::vector<unsigned char> reversed;     // 1: the pressure reversed the flow, donor = min(Phi_lo, Phi_hi)
 };
 
 using PressureFaces = std::array<AxisPressureFaces, 3>;
@@ -96,9 +96,8 @@ void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState&
 
 /// Part 2a for `axis`: U* of every face (0 on walls and faces without material) from the predicted
 /// state (u*) and the force part A of the predictor.
-void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt,
-                             const FlowState& state, const CellClosures& closures,
-                             const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf);
+void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings, int axis, double dt, const FlowState& state,
+                             const CellClosures& closures, const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf);
 
 /// Part 2b for `axis`, after U* of every axis: the value each cell gives the face (its Phi, or with a
 /// reconstruction its MUSCL-Hancock face value for U*, transport/muscl_hancock.hpp; a dust cell its
@@ -125,9 +124,8 @@ constexpr double kDustOutflow = 0.5;
 /// Part 3a for `axis` after the pressure solve (dp per cell): the corrected face velocity
 /// U = U* - dt (dp_hi - dp_lo)/(h Phi_f), the mass flux M = Phi_d U in faces.mass (0 on walls), and
 /// the speed |U| for the next step's bound in faces.speed (0 where the donor is dust).
-void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const FlowState& state,
-                               const CellClosures& closures, const AxisPressureFaces& pf, const std::vector<double>& dp,
-                               AxisFaces& faces);
+void corrected_face_velocities(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
+                               const AxisPressureFaces& pf, const std::vector<double>& dp, AxisFaces& faces);
 
 /// Caps the outflow of every dust cell (Phi < kDust Phi_co) at kDustOutflow of its Phi in a step of
 /// length dt: its outgoing mass fluxes (faces.mass of every axis) are scaled down by the factor in

@@ -24,8 +24,7 @@ namespace granseg {
 
 /// Fluxes of mass (M), normal momentum M u_n + p*, tangential momenta M u_t and Phi T u_n = M T,
 /// with u_n, u_t, T of the donor (L for M >= 0, R otherwise), and p*.
-inline __attribute__((always_inline)) FaceFlux transport_flux(const FaceState& L, const FaceState& R, double M,
-                                                            double p_star) {
+inline __attribute__((always_inline)) FaceFlux transport_flux(const FaceState& L, const FaceState& R, double M, double p_star) {
     const FaceState& d = M >= 0.0 ? L : R;
     return {M, M * d.u_n + p_star, M * d.u_t1, M * d.u_t2, M * d.T, p_star};
 }

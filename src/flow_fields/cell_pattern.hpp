@@ -25,11 +25,11 @@ namespace granseg {
 
 template <class Matrix>
 struct CellPattern {
-    std::vector<long> unknown;               // grid cell -> row (-1 outside)
-    std::array<std::vector<long>, 3> entry;  // per axis and interior face: value index of (lo, hi), or -1
-    std::array<std::vector<long>, 3> mirror; // and of (hi, lo)
-    std::vector<long> diagonal;              // value index of each row's diagonal
-    Matrix matrix;                           // the pattern, compressed (values 0 until a user writes them)
+    std::vector<long> unknown;                // grid cell -> row (-1 outside)
+    std::array<std::vector<long>, 3> entry;   // per axis and interior face: value index of (lo, hi), or -1
+    std::array<std::vector<long>, 3> mirror;  // and of (hi, lo)
+    std::vector<long> diagonal;               // value index of each row's diagonal
+    Matrix matrix;                            // the pattern, compressed (values 0 until a user writes them)
 
     /// Adds the weight w of the interior face f of `axis` between its two cells to the values of
     /// `matrix` (value = matrix.valuePtr()): +w on both diagonals, -w on both off-diagonal entries.

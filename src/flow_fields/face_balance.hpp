@@ -39,8 +39,7 @@ inline AxisWeights axis_weights(const FlowMesh& mesh, double scale = 1.0) {
 /// sum over the axes with w != 0 (x, y, z in turn) of term(axis, lower face, upper face) * w_axis
 /// for cell i of a row whose AxisRow along each axis is rows[axis].
 template <class Term>
-inline __attribute__((always_inline)) double sum_over_axes(const AxisWeights& w, int i, const AxisRow* rows,
-                                                           Term&& term) {
+inline __attribute__((always_inline)) double sum_over_axes(const AxisWeights& w, int i, const AxisRow* rows, Term&& term) {
     double sum = 0.0;
     for (int a = 0; a < 3; ++a) {
         if (w[a] == 0.0) continue;
@@ -52,31 +51,27 @@ inline __attribute__((always_inline)) double sum_over_axes(const AxisWeights& w,
 
 /// sum_axis (upper[axis][upper face] - lower[axis][lower face]) w_axis: the balance of the cell's
 /// face fluxes (the normal momentum flux differs as seen from below and above a face).
-inline __attribute__((always_inline)) double face_balance(const AxisFields& upper, const AxisFields& lower,
-                                                          const AxisWeights& w, int i, const AxisRow* rows) {
-    return sum_over_axes(w, i, rows,
-                         [&](int a, std::size_t fl, std::size_t fu) { return upper[a][fu] - lower[a][fl]; });
+inline __attribute__((always_inline)) double face_balance(const AxisFields& upper, const AxisFields& lower, const AxisWeights& w,
+                                                          int i, const AxisRow* rows) {
+    return sum_over_axes(w, i, rows, [&](int a, std::size_t fl, std::size_t fu) { return upper[a][fu] - lower[a][fl]; });
 }
 
 /// sum_axis (F[upper face] - F[lower face]) w_axis; with w = 1/h the divergence of F.
-inline __attribute__((always_inline)) double face_balance(const AxisFields& F, const AxisWeights& w, int i,
-                                                          const AxisRow* rows) {
+inline __attribute__((always_inline)) double face_balance(const AxisFields& F, const AxisWeights& w, int i, const AxisRow* rows) {
     return face_balance(F, F, w, i, rows);
 }
 
 /// sum_axis (max(0, F[upper face]) + max(0, -F[lower face])) w_axis: what leaves the cell.
-inline __attribute__((always_inline)) double face_outflow(const AxisFields& F, const AxisWeights& w, int i,
-                                                          const AxisRow* rows) {
-    return sum_over_axes(w, i, rows, [&](int a, std::size_t fl, std::size_t fu) {
-        return std::max(0.0, F[a][fu]) + std::max(0.0, -F[a][fl]);
-    });
+inline __attribute__((always_inline)) double face_outflow(const AxisFields& F, const AxisWeights& w, int i, const AxisRow* rows) {
+    return sum_over_axes(
+        w, i, rows, [&](int a, std::size_t fl, std::size_t fu) { return std::max(0.0, F[a][fu]) + std::max(0.0, -F[a][fl]); });
 }
 
 /// Phi - dt sum_axis (M[upper] - M[lower])/h for one cell, with inv_h = axis_weights(mesh): the
 /// mass balance of a step, computed by this one function wherever it is needed (the flow's update,
 /// Phi after the step within it, the hand-over's apply_mass_fluxes), so all round it alike.
-inline __attribute__((always_inline)) double mass_balance(double Phi, double dt, const AxisFields& M,
-                                                          const AxisWeights& inv_h, int i, const AxisRow* rows) {
+inline __attribute__((always_inline)) double mass_balance(double Phi, double dt, const AxisFields& M, const AxisWeights& inv_h,
+                                                          int i, const AxisRow* rows) {
     return Phi - dt * face_balance(M, inv_h, i, rows);
 }
 

@@ -28,7 +28,10 @@ std::vector<unsigned char> classify_faces(const Grid& grid, int a) {
                 }
                 const bool in_lo = has_lo && grid.is_inside(grid.index(lo[0], lo[1], lo[2]));
                 const bool in_hi = has_hi && grid.is_inside(grid.index(hi[0], hi[1], hi[2]));
-                kind[grid.face_index(a, i, j, k)] = in_lo && in_hi ? kInterior : in_hi ? kWallBelow : in_lo ? kWallAbove : kNoFace;
+                kind[grid.face_index(a, i, j, k)] = in_lo && in_hi ? kInterior
+                                                    : in_hi        ? kWallBelow
+                                                    : in_lo        ? kWallAbove
+                                                                   : kNoFace;
             }
     return kind;
 }
@@ -48,7 +51,10 @@ std::vector<MeshFace> face_list(const Grid& grid, int a, const std::vector<unsig
                 hi[a] = hi[a] % grid.n[a];
                 const std::size_t c_lo = grid.index(lo[0], lo[1], lo[2]), c_hi = grid.index(hi[0], hi[1], hi[2]);
                 const FaceKind fk = static_cast<FaceKind>(kind[f]);
-                list.push_back({f, fk == kWallBelow ? c_hi : c_lo, fk == kWallAbove ? c_lo : c_hi, fk, grid.periodic[a] && (a == 0 ? i : a == 1 ? j : k) == grid.n[a]});
+                list.push_back({f, fk == kWallBelow ? c_hi : c_lo, fk == kWallAbove ? c_lo : c_hi, fk,
+                                grid.periodic[a] && (a == 0   ? i
+                                                     : a == 1 ? j
+                                                              : k) == grid.n[a]});
             }
     return list;
 }
@@ -56,8 +62,7 @@ std::vector<MeshFace> face_list(const Grid& grid, int a, const std::vector<unsig
 
 FlowMesh::FlowMesh(Grid g) : grid(std::move(g)) {
     const std::size_t cells = grid.cells();
-    if (!grid.inside.empty() && grid.inside.size() != cells)
-        throw InputError("FlowSolver: grid.inside has the wrong size");
+    if (!grid.inside.empty() && grid.inside.size() != cells) throw InputError("FlowSolver: grid.inside has the wrong size");
     for (int a = 0; a < 3; ++a) active[a] = grid.n[a] > 1;
     rows = static_cast<std::size_t>(grid.n[1]) * grid.n[2];
     parallel = threads_pay(cells);

@@ -50,15 +50,15 @@ struct FlowMesh {
     explicit FlowMesh(Grid grid);
 
     Grid grid;
-    std::array<bool, 3> active{};                   // n[axis] > 1
-    std::size_t rows = 0;                           // ny * nz rows of cells along x
-    bool parallel = false;                          // loops on the OpenMP threads (core/threads.hpp)
-    std::vector<int> row_lo, row_hi;                // inside cells of row r lie in [row_lo[r], row_hi[r])
-    std::vector<unsigned char> inside;              // 1 for inside cells (grid.inside or all)
-    std::vector<std::size_t> inside_cells;          // their indices, in index order
+    std::array<bool, 3> active{};                         // n[axis] > 1
+    std::size_t rows = 0;                                 // ny * nz rows of cells along x
+    bool parallel = false;                                // loops on the OpenMP threads (core/threads.hpp)
+    std::vector<int> row_lo, row_hi;                      // inside cells of row r lie in [row_lo[r], row_hi[r])
+    std::vector<unsigned char> inside;                    // 1 for inside cells (grid.inside or all)
+    std::vector<std::size_t> inside_cells;                // their indices, in index order
     std::array<std::vector<unsigned char>, 3> face_kind;  // per axis and face: FaceKind
-    std::array<std::vector<double>, 3> position;    // cell centres
-    std::array<std::vector<MeshFace>, 3> faces;     // per axis: every interior and wall face
+    std::array<std::vector<double>, 3> position;          // cell centres
+    std::array<std::vector<MeshFace>, 3> faces;           // per axis: every interior and wall face
 
     /// The neighbours and faces of the cells of row r along `axis`.
     AxisRow axis_row(int axis, std::size_t row) const;

@@ -20,8 +20,7 @@ namespace granseg {
 /// How a step treats the acoustic waves (docs/flow_solver.md Sect. 1).
 enum class TimeStepping { explicit_waves, semi_implicit };
 inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
-    {TimeStepping::explicit_waves, "explicit",
-     "HLLC fluxes, dt bounded by the sound speed (cfl on |u_n| + c)"},
+    {TimeStepping::explicit_waves, "explicit", "HLLC fluxes, dt bounded by the sound speed (cfl on |u_n| + c)"},
     {TimeStepping::semi_implicit, "semi-implicit",
      "pressure implicit (one Newton-Krylov solve per step), dt bounded by the material speed (cfl on |u_n|)"},
 };
@@ -29,8 +28,7 @@ inline constexpr Choice<TimeStepping> kTimeSteppings[] = {
 /// How the implicit viscosity treats the axes (docs/flow_solver_choices.md, "Why these choices").
 enum class ViscositySolve { split, coupled };
 inline constexpr Choice<ViscositySolve> kViscositySolves[] = {
-    {ViscositySolve::coupled, "coupled",
-     "all axes in one sparse Cholesky solve per step (default with semi-implicit)"},
+    {ViscositySolve::coupled, "coupled", "all axes in one sparse Cholesky solve per step (default with semi-implicit)"},
     {ViscositySolve::split, "split",
      "one axis after the other, tridiagonal line solves; creep too slow when dt eta/(Phi h^2) >> 1 (default with explicit)"},
 };
@@ -57,32 +55,32 @@ inline constexpr Choice<Transport> kTransports[] = {
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
     TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 1)
-    std::optional<ViscositySolve> viscosity;  // unset: coupled with semi-implicit, split with explicit
-    Factorisation factorisation = Factorisation::supernodal;  // of the coupled viscosity
-    double cfl = 0.9;           // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
-    double T_floor = 1e-12;     // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
-    double Phi_vacuum = 1e-12;  // cells with Phi <= this are empty: u = 0, T = T_floor
-    double dt_min = 1e-9;       // s; a smaller step stops the run with InvariantError
-    double dt_max = 2e-3;       // s (the drum's angle against dt_max: docs/flow_solver.md)
-    double pressure_tolerance = 1e-2;  // semi-implicit: Newton stops at this share of the step's largest explicit mass change
-    double phi_hat = 0.5;       // small-particle share used for Phi_rcp, Phi_co when no phi field is set
+    std::optional<ViscositySolve> viscosity;                   // unset: coupled with semi-implicit, split with explicit
+    Factorisation factorisation = Factorisation::supernodal;   // of the coupled viscosity
+    double cfl = 0.9;                    // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
+    double T_floor = 1e-12;              // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
+    double Phi_vacuum = 1e-12;           // cells with Phi <= this are empty: u = 0, T = T_floor
+    double dt_min = 1e-9;                // s; a smaller step stops the run with InvariantError
+    double dt_max = 2e-3;                // s (the drum's angle against dt_max: docs/flow_solver.md)
+    double pressure_tolerance = 1e-2;    // semi-implicit: Newton stops at this share of the step's largest explicit mass change
+    double phi_hat = 0.5;                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
     std::optional<Transport> transport;  // unset: muscl with semi-implicit; the explicit step's HLLC fluxes are donor cell
-    Limiter limiter = Limiter::mc;                // of the reconstruction with transport = muscl
+    Limiter limiter = Limiter::mc;       // of the reconstruction with transport = muscl
 };
 
 /// The viscosity solve `s` asks for, or the default of its time stepping (the semi-implicit
 /// step's dt makes the splitting error of the line solves too large; docs/assumptions.md F10).
 inline ViscositySolve viscosity_solve(const FlowSettings& s) {
-    return s.viscosity ? *s.viscosity
-                       : s.time_stepping == TimeStepping::semi_implicit ? ViscositySolve::coupled : ViscositySolve::split;
+    return s.viscosity                                      ? *s.viscosity
+           : s.time_stepping == TimeStepping::semi_implicit ? ViscositySolve::coupled
+                                                            : ViscositySolve::split;
 }
 
 /// The transport `s` asks for, or the default of its time stepping: muscl for the semi-implicit
 /// step, donor-cell for the explicit one (its HLLC fluxes carry the upwind values; muscl needs
 /// the semi-implicit step, FlowSolver and the scene reader refuse it there).
 inline Transport transport_scheme(const FlowSettings& s) {
-    return s.transport ? *s.transport
-                       : s.time_stepping == TimeStepping::semi_implicit ? Transport::muscl : Transport::donor_cell;
+    return s.transport ? *s.transport : s.time_stepping == TimeStepping::semi_implicit ? Transport::muscl : Transport::donor_cell;
 }
 
 /// Sources added to the conserved variables (manufactured solutions): called per inside cell with

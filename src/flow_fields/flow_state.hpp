@@ -34,28 +34,30 @@ struct FlowState {
 };
 
 struct CellClosures {
-    std::vector<double> p, c;                // pressure (eq. 15) and sound speed sqrt(dp/dPhi at fixed T)
-    std::vector<double> eta, lambda, epsPhi; // viscosity, conductivity, eps Phi (eqs. 17, 20)
-    std::vector<double> Phi_rcp, Phi_co;     // packing limits at the cell's phi_hat
+    std::vector<double> p, c;                 // pressure (eq. 15) and sound speed sqrt(dp/dPhi at fixed T)
+    std::vector<double> eta, lambda, epsPhi;  // viscosity, conductivity, eps Phi (eqs. 17, 20)
+    std::vector<double> Phi_rcp, Phi_co;      // packing limits at the cell's phi_hat
 };
 
 struct Potential {
-    std::vector<double> cell;                   // psi = -g . x - omega^2 r^2/2 at the cell centre
-    std::array<std::vector<double>, 3> face;    // per axis: the mean of the two cells' psi
+    std::vector<double> cell;                 // psi = -g . x - omega^2 r^2/2 at the cell centre
+    std::array<std::vector<double>, 3> face;  // per axis: the mean of the two cells' psi
 };
 
 struct AxisLoads {
-    std::vector<double> load;   // weight per area a cell's downhill face carries beyond p + Phi |d_psi|
-    std::vector<double> carry;  // pressure an unsupported cell passes on at its uphill face
+    std::vector<double> load;      // weight per area a cell's downhill face carries beyond p + Phi |d_psi|
+    std::vector<double> carry;     // pressure an unsupported cell passes on at its uphill face
     std::vector<double> downhill;  // pressure at the downhill face, what rests on the next cell of the sweep
 };
 
 struct AxisFaces {
-    std::vector<double> mass, energy;      // Phi u_n (the hand-over M), Phi T u_n
+    std::vector<double> mass, energy;        // Phi u_n (the hand-over M), Phi T u_n
     std::array<std::vector<double>, 3> mom;  // momentum flux per component; mom[axis] as seen by the cell above
-    std::vector<double> mom_below;         // normal momentum flux as seen by the cell below
-    std::vector<double> p, speed;          // face pressure p* and fastest wave speed |u_n| + c
-    void checkpoint(StateIO& io) { io("mass", mass)("energy", energy)("mom", mom)("mom_below", mom_below)("p", p)("speed", speed); }
+    std::vector<double> mom_below;           // normal momentum flux as seen by the cell below
+    std::vector<double> p, speed;            // face pressure p* and fastest wave speed |u_n| + c
+    void checkpoint(StateIO& io) {
+        io("mass", mass)("energy", energy)("mom", mom)("mom_below", mom_below)("p", p)("speed", speed);
+    }
 };
 
 using FlowFaces = std::array<AxisFaces, 3>;

@@ -21,8 +21,8 @@ void compute_primitives(const FlowMesh& mesh, const Material& mat, const FlowSet
                  *mz = state.m[2].data();
     const unsigned char* in = mesh.inside.data();
     double *ux = state.u[0].data(), *uy = state.u[1].data(), *uz = state.u[2].data(), *T = state.T.data();
-    double *p = cl.p.data(), *cs = cl.c.data(), *eta = cl.eta.data(), *lambda = cl.lambda.data(),
-           *epsPhi = cl.epsPhi.data(), *rcp = cl.Phi_rcp.data(), *co = cl.Phi_co.data();
+    double *p = cl.p.data(), *cs = cl.c.data(), *eta = cl.eta.data(), *lambda = cl.lambda.data(), *epsPhi = cl.epsPhi.data(),
+           *rcp = cl.Phi_rcp.data(), *co = cl.Phi_co.data();
     const bool per_cell = !phi_hat.empty();
     auto row = [&](long& packed_cells, std::size_t r) {
         const std::size_t base = nx * r;

@@ -40,10 +40,7 @@ PressureSolver::PressureSolver(const FlowMesh& mesh) : pattern_(cell_pattern<Mat
 }
 
 PressureSolver::PressureSolver(const PressureSolver& other)
-    : pattern_(other.pattern_),
-      J_(other.J_),
-      laplacian_(other.laplacian_),
-      x_(other.x_) {
+    : pattern_(other.pattern_), J_(other.J_), laplacian_(other.laplacian_), x_(other.x_) {
     cg_.preconditioner() = other.cg_.preconditioner();
     cg_.setTolerance(kKrylovTolerance);
     cg_.analyzePattern(J_);
@@ -58,8 +55,8 @@ PressureSolver& PressureSolver::operator=(const PressureSolver& other) {
     return *this;
 }
 
-void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                                   const CellClosures& cl, const Eigen::VectorXd& step) {
+void PressureSolver::newton_update(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                                   const Eigen::VectorXd& step) {
     parallel_for(mesh.parallel, mesh.inside_cells.size(), [&](std::size_t q) {
         const std::size_t c = mesh.inside_cells[q];
         const long r = pattern_.unknown[c];
@@ -76,9 +73,8 @@ void PressureSolver::newton_update(const FlowMesh& mesh, const Material& materia
     });
 }
 
-void PressureSolver::assemble(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                              const CellClosures& cl, const PressureFaces& faces, const std::vector<double>& change,
-                              const std::vector<double>& dp) {
+void PressureSolver::assemble(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl,
+                              const PressureFaces& faces, const std::vector<double>& change, const std::vector<double>& dp) {
     const long rows = J_.rows();
     double* value = laplacian_.valuePtr();
     // The coupling part: K_f on both diagonals, -K_f off the diagonal.
@@ -98,8 +94,7 @@ void PressureSolver::assemble(const FlowMesh& mesh, const Material& material, co
     }
 }
 
-double PressureSolver::residual(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                                const CellClosures& cl) {
+double PressureSolver::residual(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& cl) {
     // Phi(p + dp) resolves p + dp no finer than the spacing of doubles near p and dp: where
     // dPhi/dp is large (a bed at T_floor, with p + dp near 0) that alone leaves a residual of
     // slope * eps * (|p| + |dp|), far above kRoundOff, which no Newton step can reduce (the step
@@ -132,9 +127,8 @@ int PressureSolver::newton_step(const FlowMesh& mesh, double tolerance) {
 }
 
 PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                                         const CellClosures& cl, const PressureFaces& faces,
-                                         const std::vector<double>& change, double accuracy, bool solved_guess,
-                                         std::vector<double>& dp) {
+                                         const CellClosures& cl, const PressureFaces& faces, const std::vector<double>& change,
+                                         double accuracy, bool solved_guess, std::vector<double>& dp) {
     assemble(mesh, material, state, cl, faces, change, dp);
     PressureSolveStats stats;
     // Newton stops at `accuracy` times the largest mass change of the explicit fluxes, and at
@@ -153,8 +147,7 @@ PressureSolveStats PressureSolver::solve(const FlowMesh& mesh, const Material& m
         // At least one Newton step (a lagged pressure would not damp the acoustic waves), unless
         // the guess is this step's implicit pressure already or the residual is at round-off (a
         // bed at rest then stays exactly where it is).
-        if (stats.residual <= tolerance + resolution &&
-            (stats.newton > 0 || solved_guess || stats.residual <= kRoundOff)) {
+        if (stats.residual <= tolerance + resolution && (stats.newton > 0 || solved_guess || stats.residual <= kRoundOff)) {
             stats.converged = true;
             break;
         }

@@ -56,9 +56,9 @@ namespace granseg {
 
 /// Iteration counts of one pressure solve.
 struct PressureSolveStats {
-    int newton = 0;          // Newton steps
-    int krylov = 0;          // conjugate-gradient iterations, summed over the Newton steps
-    double residual = 0.0;   // max |F_c| at the end
+    int newton = 0;         // Newton steps
+    int krylov = 0;         // conjugate-gradient iterations, summed over the Newton steps
+    double residual = 0.0;  // max |F_c| at the end
     bool converged = false;
 };
 
@@ -74,9 +74,8 @@ public:
     /// material); change: r_c per cell. Newton stops when max |F_c| <= accuracy max |r_c| + round-off,
     /// after at least one Newton step unless `solved_guess` (the guess already solves this step's
     /// equation for nearly the same K: a repeat after reversed faces) or F is at round-off.
-    PressureSolveStats solve(const FlowMesh& mesh, const Material& material, const FlowState& state,
-                             const CellClosures& closures, const PressureFaces& faces,
-                             const std::vector<double>& change, double accuracy, bool solved_guess,
+    PressureSolveStats solve(const FlowMesh& mesh, const Material& material, const FlowState& state, const CellClosures& closures,
+                             const PressureFaces& faces, const std::vector<double>& change, double accuracy, bool solved_guess,
                              std::vector<double>& dp);
 
 private:
@@ -95,8 +94,8 @@ private:
     /// The Newton step step_ = -J^-1 F, by conjugate gradients to what the Newton tolerance
     /// needs; returns its iterations, counted as Eigen's CG counts them plus one.
     int newton_step(const FlowMesh& mesh, double tolerance);
-    CellPattern<Matrix> pattern_;  // inside cells and interior faces (flow_fields/cell_pattern.hpp)
-    Matrix J_, laplacian_;  // the Jacobian, and its coupling part (same pattern)
+    CellPattern<Matrix> pattern_;                    // inside cells and interior faces (flow_fields/cell_pattern.hpp)
+    Matrix J_, laplacian_;                           // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, volume_, slope_, F_, step_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F, Newton step
     Eigen::VectorXd base_, target_;                  // per row: Phi(p) at the start of the solve, r
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Multilevel> cg_;

@@ -26,8 +26,8 @@ RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label,
         progress.update(solver.time());
         const double drift = std::fabs(solver.mass() - mass0) / mass0;
         if (!(drift <= kMassDriftLimit))
-            throw InvariantError(label + ": mass changed by " + format_number(drift) + " (relative) between t = " +
-                                 format_number(t0) + " and " + format_number(solver.time()) + " s");
+            throw InvariantError(label + ": mass changed by " + format_number(drift) +
+                                 " (relative) between t = " + format_number(t0) + " and " + format_number(solver.time()) + " s");
         saves.after_step(solver.time(), solver.steps(), state);
     }
     saves.finish(solver.time(), solver.steps(), state);
@@ -60,9 +60,15 @@ DataTable flow_field_table(const FlowSolver& s, bool lab) {
                 const auto v = s.frame().to_lab_velocity(s.time(), x, z, ux, uz);
                 x = xz[0], z = xz[1], ux = in ? v[0] : 0.0, uz = in ? v[1] : 0.0;
             }
-            table.row({{"x", x}, {"z", z}, {"Phi", in ? s.Phi()[c] : 0.0}, {"u_x", ux}, {"u_y", s.u(1)[c]},
-                        {"u_z", uz}, {"T", in ? s.T()[c] : 0.0}, {"p", cell_pressure(s, c)},
-                        {"inside", in ? 1.0 : 0.0}});
+            table.row({{"x", x},
+                       {"z", z},
+                       {"Phi", in ? s.Phi()[c] : 0.0},
+                       {"u_x", ux},
+                       {"u_y", s.u(1)[c]},
+                       {"u_z", uz},
+                       {"T", in ? s.T()[c] : 0.0},
+                       {"p", cell_pressure(s, c)},
+                       {"inside", in ? 1.0 : 0.0}});
         }
         table.blank();
     }
@@ -75,8 +81,12 @@ DataTable flow_column_table(const FlowSolver& s) {
     table.comment("t = " + format_number(s.time()) + " s; units m, m/s, m^2/s^2");
     for (int k = 0; k < g.n[2]; ++k) {
         const std::size_t c = g.index(0, 0, k);
-        table.row({{"z", g.center(2, k)}, {"Phi", s.Phi()[c]}, {"u_x", s.u(0)[c]}, {"u_z", s.u(2)[c]},
-                    {"T", s.T()[c]}, {"p", cell_pressure(s, c)}});
+        table.row({{"z", g.center(2, k)},
+                   {"Phi", s.Phi()[c]},
+                   {"u_x", s.u(0)[c]},
+                   {"u_z", s.u(2)[c]},
+                   {"T", s.T()[c]},
+                   {"p", cell_pressure(s, c)}});
     }
     return table;
 }
@@ -87,8 +97,8 @@ std::string flow_vtk(const FlowSolver& s) {
     std::ostringstream out;
     out.precision(9);
     out << "# vtk DataFile Version 3.0\ngranseg flow, lab frame, t = " << s.time() << " s\nASCII\n"
-        << "DATASET STRUCTURED_GRID\nDIMENSIONS " << nx + 1 << " " << nz + 1 << " 1\nPOINTS "
-        << (nx + 1) * (nz + 1) << " double\n";
+        << "DATASET STRUCTURED_GRID\nDIMENSIONS " << nx + 1 << " " << nz + 1 << " 1\nPOINTS " << (nx + 1) * (nz + 1)
+        << " double\n";
     for (int k = 0; k <= nz; ++k)
         for (int i = 0; i <= nx; ++i) {
             const auto xz = s.frame().to_lab_position(s.time(), g.origin[0] + i * g.h[0], g.origin[2] + k * g.h[2]);
@@ -119,7 +129,8 @@ void append_flow_work(const FlowSolver& solver, TableRow& work) {
     const FlowCounters& counts = solver.counters();
     for (int b = 0; b < kStepBounds; ++b)
         work.add(std::string("steps_") + step_bound_name(static_cast<StepBound>(b)), static_cast<double>(counts.set_by[b]));
-    work.add({{"pressure_solves", static_cast<double>(counts.pressure_solves)}, {"newton", static_cast<double>(counts.newton)},
+    work.add({{"pressure_solves", static_cast<double>(counts.pressure_solves)},
+              {"newton", static_cast<double>(counts.newton)},
               {"krylov", static_cast<double>(counts.krylov)},
               {"temperature_iterations", static_cast<double>(counts.temperature_iterations)}});
     for (int k = 0; k < kFlowStages; ++k)
@@ -159,7 +170,8 @@ DrumState drum_state(const FlowSolver& s, double Phi_level, double radius, doubl
         for (const auto& p : points) mx += p[0], mz += p[1];
         mx /= points.size(), mz /= points.size();
         double sxx = 0, sxz = 0, szz = 0;
-        for (const auto& p : points) sxx += (p[0] - mx) * (p[0] - mx), sxz += (p[0] - mx) * (p[1] - mz), szz += (p[1] - mz) * (p[1] - mz);
+        for (const auto& p : points)
+            sxx += (p[0] - mx) * (p[0] - mx), sxz += (p[0] - mx) * (p[1] - mz), szz += (p[1] - mz) * (p[1] - mz);
         const double theta = 0.5 * std::atan2(2 * sxz, sxx - szz);  // principal direction of the points
         d.surface_offset = -(mx - f.x_c) * std::sin(theta) + (mz - f.z_c) * std::cos(theta);
         d.surface_distance = std::fabs(d.surface_offset);

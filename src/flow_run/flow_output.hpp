@@ -30,9 +30,8 @@ constexpr double kMassDriftLimit = 1e-8;
 /// more than kMassDriftLimit. With `checkpoints`, writes checkpoints of `state` (the solver and
 /// what the caller records, core/run_checkpoints.hpp; the caller has resumed it first, if at
 /// all). Returns the run's wall and CPU seconds (with those before a resume) and its threads.
-RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label,
-                     const std::function<void()>& after_step = {}, RunCheckpoints* checkpoints = nullptr,
-                     const RunState& state = {});
+RunTime advance_flow(FlowSolver& solver, double t_end, const std::string& label, const std::function<void()>& after_step = {},
+                     RunCheckpoints* checkpoints = nullptr, const RunState& state = {});
 
 /// Cell fields of the slice j = 0, one gnuplot block per row of x (blank lines between rows):
 /// x z Phi u_x u_y u_z T p inside, in the frame of the solver (lab = false) or with positions
@@ -86,7 +85,6 @@ void append_run_time(const RunTime& cost, TableRow& row);
 /// (perpendicular to gravity at the solver's time). The window: points within `radius` of the
 /// axis, or, given a drum `shape`, points whose gauge (DrumShape::gauge) is below `radius` (the
 /// shape scaled by radius / R; for a circle the same points).
-DrumState drum_state(const FlowSolver& solver, double Phi_level, double radius, double v_flow,
-                     const DrumShape* shape = nullptr);
+DrumState drum_state(const FlowSolver& solver, double Phi_level, double radius, double v_flow, const DrumShape* shape = nullptr);
 
 }  // namespace granseg

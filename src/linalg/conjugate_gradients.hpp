@@ -28,6 +28,6 @@ struct CgResult {
 
 /// x = A^-1 b to the relative tolerance `tolerance` (see the header comment).
 CgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eigen::VectorXd& b, double tolerance,
-                     Eigen::VectorXd& x);
+                 Eigen::VectorXd& x);
 
 }  // namespace granseg

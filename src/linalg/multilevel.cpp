@@ -132,7 +132,8 @@ void Multilevel::build(const Matrix& pattern, const std::vector<std::array<int, 
     double bound = 1.0;
     for (std::size_t l = level_.size() - 1; l-- > 0;) {
         Level& L = level_[l];
-        const bool twice = l > 0 && l + 2 < level_.size() && 3 * level_[l + 1].A.rows() <= L.A.rows() && kOverCorrection * bound < 2.0;
+        const bool twice =
+            l > 0 && l + 2 < level_.size() && 3 * level_[l + 1].A.rows() <= L.A.rows() && kOverCorrection * bound < 2.0;
         L.visits = twice ? 2 : 1;
         bound = twice ? 1.0 : std::max(1.0, kOverCorrection * bound);
     }

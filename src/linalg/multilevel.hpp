@@ -8,9 +8,9 @@
 //   invariants  every level is again a diagonal plus a weighted graph Laplacian; new values
 //               re-add sums along maps built once, without allocation
 //
-// Used by the pressure solve (flow_pressure/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive definite matrices
-// A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with
-// faces of weight 0, the inside cells of a drum an irregular part of the grid).
+// Used by the pressure solve (flow_pressure/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive
+// definite matrices A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with faces of
+// weight 0, the inside cells of a drum an irregular part of the grid).
 //
 // The choice (docs/flow_solver.md Sect. 2, pressure_solve, "The multilevel preconditioner"):
 // * Aggregation: the cells of each 2 x 2 (x 2) block of the grid form one coarse cell (on the
@@ -84,11 +84,17 @@ public:
     // The interface of an Eigen iterative solver's preconditioner (Eigen::ConjugateGradient):
     // the hierarchy comes from `build`, so the pattern analysis has nothing to do.
     template <class SparseMatrix>
-    Multilevel& analyzePattern(const SparseMatrix&) { return *this; }
+    Multilevel& analyzePattern(const SparseMatrix&) {
+        return *this;
+    }
     template <class SparseMatrix>
-    Multilevel& factorize(const SparseMatrix& A) { return take_values(A.valuePtr()); }
+    Multilevel& factorize(const SparseMatrix& A) {
+        return take_values(A.valuePtr());
+    }
     template <class SparseMatrix>
-    Multilevel& compute(const SparseMatrix& A) { return take_values(A.valuePtr()); }
+    Multilevel& compute(const SparseMatrix& A) {
+        return take_values(A.valuePtr());
+    }
     Eigen::ComputationInfo info() const { return Eigen::Success; }
 
 private:

@@ -89,8 +89,7 @@ void SupernodalLDLT::form_supernodes(const std::vector<long>& parent, const std:
     }
 }
 
-void SupernodalLDLT::gather_rows(const std::vector<std::vector<long>>& below,
-                                 const std::vector<std::vector<long>>& children) {
+void SupernodalLDLT::gather_rows(const std::vector<std::vector<long>>& below, const std::vector<std::vector<long>>& children) {
     // Each supernode's rows: its columns, then below its last column the entries of A in its
     // columns and the rows of its child supernodes.
     const long supers = supernodes();
@@ -232,8 +231,9 @@ bool SupernodalLDLT::factorize(const Matrix& A, bool parallel) {
             for (long s = begin; s < end && ok[l]; ++s) ok[l] = factor_supernode(s, a, lane, true);
     });
     if (!eigen_alone[0] || !eigen_alone[1])
-        throw InvariantError("supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "
-                             "own inside a factorisation lane");
+        throw InvariantError(
+            "supernodal LDL^T: Eigen::setNbThreads() asks Eigen's dense products for threads of their "
+            "own inside a factorisation lane");
     if (!ok[0] || !ok[1]) return false;
     for (Lane& lane : lanes_)
         for (long d : lane.pending) {

@@ -83,8 +83,7 @@ private:
     void place_entries(const Matrix& A);
     /// Splits the supernodal tree into two sets of subtrees of about equal work and the top
     /// (the rest, factored after both).
-    void split(const std::vector<double>& work, const std::vector<long>& parent,
-               const std::vector<std::vector<long>>& children);
+    void split(const std::vector<double>& work, const std::vector<long>& parent, const std::vector<std::vector<long>>& children);
     /// Factors supernode s (A's values a) with the updates waiting for it; supernodes then
     /// waiting for a top supernode go to lane.pending if `defer`. False if a pivot fails.
     bool factor_supernode(long s, const double* a, Lane& lane, bool defer);
@@ -101,17 +100,17 @@ private:
     /// pivot fails, with failed_row_ set.
     bool factor_panel(long s);
 
-    std::vector<long> order_;        // permuted row k is row order_[k] of A
-    std::vector<long> new_of_old_;   // row of A -> permuted row
-    std::vector<long> first_;        // first column of each supernode (one past the last at the end)
-    std::vector<long> super_of_;     // column -> supernode
-    std::vector<long> row_start_;    // per supernode, into row_
-    std::vector<long> row_;          // each supernode's rows (permuted numbering)
-    std::vector<long> value_start_;  // per supernode, into value_
-    std::vector<long> entry_start_;  // per supernode, into entry_
+    std::vector<long> order_;                   // permuted row k is row order_[k] of A
+    std::vector<long> new_of_old_;              // row of A -> permuted row
+    std::vector<long> first_;                   // first column of each supernode (one past the last at the end)
+    std::vector<long> super_of_;                // column -> supernode
+    std::vector<long> row_start_;               // per supernode, into row_
+    std::vector<long> row_;                     // each supernode's rows (permuted numbering)
+    std::vector<long> value_start_;             // per supernode, into value_
+    std::vector<long> entry_start_;             // per supernode, into entry_
     std::vector<std::pair<long, long>> entry_;  // its entries of A: (index in A's values, in its panel)
-    std::vector<double> value_;      // the panels: L below the diagonal, D on it
-    std::vector<long> top_;          // supernodes factored after both lanes, ascending
+    std::vector<double> value_;                 // the panels: L below the diagonal, D on it
+    std::vector<long> top_;                     // supernodes factored after both lanes, ascending
     std::vector<char> in_top_;
     // Scratch of factorize().
     std::array<Lane, 2> lanes_;

@@ -29,7 +29,7 @@ constexpr std::size_t kBlock = 64;
 }  // namespace
 
 void TridiagonalLines::factor(const Grid& grid, int axis, const std::vector<double>& lower, const std::vector<double>& diag,
-                        const std::vector<double>& upper) {
+                              const std::vector<double>& upper) {
     grid_ = &grid;
     axis_ = axis;
     const LineLayout L = layout(grid, axis);
@@ -47,45 +47,47 @@ void TridiagonalLines::factor(const Grid& grid, int axis, const std::vector<doub
     // correction vector (gamma, 0, ..., 0, alpha) with alpha = -upper[n-1] (the coupling of cell
     // n-1 to cell 0); beta = -lower[0] couples cell 0 to cell n-1.
     parallel_for_pairs(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
-            const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
-            for (int m = 0; m < L.n; ++m) {
-                const std::size_t row = o * L.outer + m * L.step;
-                const bool first = m == 0, end = m == L.n - 1;
+        const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
+        for (int m = 0; m < L.n; ++m) {
+            const std::size_t row = o * L.outer + m * L.step;
+            const bool first = m == 0, end = m == L.n - 1;
 #pragma omp simd
-                for (std::size_t q = q0; q < q1; ++q) {
-                    const std::size_t c = row + q * L.inner, base = c - m * L.step;
-                    double l = first ? 0.0 : lower[c];
-                    double u = end ? 0.0 : upper[c];
-                    double d = diag[c];
-                    if (merged) {
-                        if (first) u += lower[c];
-                        else l += upper[c];
-                    }
-                    if (cyclic_ && first) d *= 2.0;
-                    if (cyclic_ && end) d += upper[c] * lower[base] / diag[base];
-                    const double prev_ratio = first ? 0.0 : ratio_[c - L.step];
-                    const double w = 1.0 / (d - l * prev_ratio);
-                    lower_[c] = l;
-                    inv_pivot_[c] = w;
-                    ratio_[c] = u * w;
+            for (std::size_t q = q0; q < q1; ++q) {
+                const std::size_t c = row + q * L.inner, base = c - m * L.step;
+                double l = first ? 0.0 : lower[c];
+                double u = end ? 0.0 : upper[c];
+                double d = diag[c];
+                if (merged) {
+                    if (first)
+                        u += lower[c];
+                    else
+                        l += upper[c];
                 }
+                if (cyclic_ && first) d *= 2.0;
+                if (cyclic_ && end) d += upper[c] * lower[base] / diag[base];
+                const double prev_ratio = first ? 0.0 : ratio_[c - L.step];
+                const double w = 1.0 / (d - l * prev_ratio);
+                lower_[c] = l;
+                inv_pivot_[c] = w;
+                ratio_[c] = u * w;
             }
-            if (!cyclic_) return;
-            for (std::size_t q = q0; q < q1; ++q) {
-                const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
-                for (int m = 0; m < L.n; ++m) z_[base + m * L.step] = 0.0;
-                corner_lo_[line] = lower[base];
-                z_[base] = -diag[base];
-                z_[base + last] = -upper[base + last];
-            }
-            sweep(z_.data(), o, q0, q1);
-            for (std::size_t q = q0; q < q1; ++q) {
-                const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
-                const double kappa = corner_lo_[line] / diag[base];  // beta / gamma
-                denom_[line] = 1.0 + z_[base] + kappa * z_[base + last];
-                corner_lo_[line] = kappa;
-            }
-        });
+        }
+        if (!cyclic_) return;
+        for (std::size_t q = q0; q < q1; ++q) {
+            const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
+            for (int m = 0; m < L.n; ++m) z_[base + m * L.step] = 0.0;
+            corner_lo_[line] = lower[base];
+            z_[base] = -diag[base];
+            z_[base + last] = -upper[base + last];
+        }
+        sweep(z_.data(), o, q0, q1);
+        for (std::size_t q = q0; q < q1; ++q) {
+            const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
+            const double kappa = corner_lo_[line] / diag[base];  // beta / gamma
+            denom_[line] = 1.0 + z_[base] + kappa * z_[base + last];
+            corner_lo_[line] = kappa;
+        }
+    });
 }
 
 void TridiagonalLines::sweep(double* x, std::size_t o, std::size_t q0, std::size_t q1) const {
@@ -116,15 +118,15 @@ void TridiagonalLines::solve(std::vector<double>& x) const {
     const std::size_t last = static_cast<std::size_t>(L.n - 1) * L.step, blocks = (L.n_inner + kBlock - 1) / kBlock;
     double* data = x.data();
     parallel_for_pairs(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
-            const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
-            sweep(data, o, q0, q1);
-            if (!cyclic_) return;
-            for (std::size_t q = q0; q < q1; ++q) {  // Sherman-Morrison correction
-                const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
-                const double fact = (data[base] + corner_lo_[line] * data[base + last]) / denom_[line];
-                for (int m = 0; m < L.n; ++m) data[base + m * L.step] -= fact * z_[base + m * L.step];
-            }
-        });
+        const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
+        sweep(data, o, q0, q1);
+        if (!cyclic_) return;
+        for (std::size_t q = q0; q < q1; ++q) {  // Sherman-Morrison correction
+            const std::size_t base = o * L.outer + q * L.inner, line = o * L.n_inner + q;
+            const double fact = (data[base] + corner_lo_[line] * data[base + last]) / denom_[line];
+            for (int m = 0; m < L.n; ++m) data[base + m * L.step] -= fact * z_[base + m * L.step];
+        }
+    });
 }
 
 }  // namespace granseg

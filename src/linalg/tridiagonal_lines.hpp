@@ -6,7 +6,8 @@
 //   outputs     the solutions, overwriting the right-hand sides
 //   invariants  no pivoting: diag >= lower + upper (an M-matrix)
 //
-// Used by the implicit, dimension-split (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver_choices.md, "The explicit step").
+// Used by the implicit, dimension-split (Lie/ADI) viscosity and conduction steps of the flow solver (docs/flow_solver_choices.md,
+// "The explicit step").
 //
 // Along a line with cells 0..n-1 the system is
 //     diag[c] x[c] - lower[c] x[c - s] - upper[c] x[c + s] = rhs[c]      (s: stride of the axis)
@@ -41,7 +42,7 @@ private:
     bool cyclic_ = false, parallel_ = false;
     std::vector<double> lower_, inv_pivot_, ratio_;  // Thomas: 1/pivot and upper/pivot per cell
     std::vector<double> z_;                          // cyclic: solution for the correction vector
-    std::vector<double> corner_lo_, denom_;  // cyclic: beta/gamma and the Sherman-Morrison denominator per line
+    std::vector<double> corner_lo_, denom_;          // cyclic: beta/gamma and the Sherman-Morrison denominator per line
 };
 
 }  // namespace granseg

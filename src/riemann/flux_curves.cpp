@@ -19,12 +19,12 @@ constexpr double kClampSlack = 1e3 * DBL_EPSILON;
 /// d = 1 + 4F/(a Phi) in [0, 1]: the discriminant of a phi^2/Phi - a phi - F = 0, scaled.
 double discriminant(double F, double Phi, double a) {
     if (!(Phi > 0.0) || a == 0.0)
-        throw InputError("flux inverse: needs Phi > 0 and a != 0 (Phi = " + format_number(Phi) +
-                                    ", a = " + format_number(a) + ")");
+        throw InputError("flux inverse: needs Phi > 0 and a != 0 (Phi = " + format_number(Phi) + ", a = " + format_number(a) +
+                         ")");
     const double d = 1.0 + 4.0 * F / (a * Phi);
     if (d < -kClampSlack || d > 1.0 + kClampSlack)
-        throw InputError("flux inverse: F = " + format_number(F, 17) + " is not a value of f(.; Phi = " +
-                                    format_number(Phi) + ", a = " + format_number(a) + ")");
+        throw InputError("flux inverse: F = " + format_number(F, 17) + " is not a value of f(.; Phi = " + format_number(Phi) +
+                         ", a = " + format_number(a) + ")");
     return std::clamp(d, 0.0, 1.0);
 }
 

@@ -67,18 +67,18 @@ Connection convex_connection(const FluxSide& L, const FluxSide& R) {
 
     Connection found[4];
     int n = 0;
-    if (R.phi <= theta_R && f_R >= left_floor) found[n++] = {f_R, trace(L, f_R, false), R.phi};               // (i)
-    if (L.phi >= theta_L && f_L >= right_floor) found[n++] = {f_L, L.phi, trace(R, f_L, true)};                // (ii)
-    if (L_left && fL_min >= right_floor) found[n++] = {fL_min, theta_L, trace(R, fL_min, true)};               // (iii)
-    if (R_right && fR_min >= left_floor) found[n++] = {fR_min, trace(L, fR_min, false), theta_R};              // (iv)
+    if (R.phi <= theta_R && f_R >= left_floor) found[n++] = {f_R, trace(L, f_R, false), R.phi};    // (i)
+    if (L.phi >= theta_L && f_L >= right_floor) found[n++] = {f_L, L.phi, trace(R, f_L, true)};    // (ii)
+    if (L_left && fL_min >= right_floor) found[n++] = {fL_min, theta_L, trace(R, fL_min, true)};   // (iii)
+    if (R_right && fR_min >= left_floor) found[n++] = {fR_min, trace(L, fR_min, false), theta_R};  // (iv)
 
     // Two admissible connections differ only by the rounding of f(theta) against -a Phi/4.
     const double tie = 16 * DBL_EPSILON * (L.a * L.Phi + R.a * R.Phi);
     if (n == 0) throw InvariantError("Riemann solver: no admissible connection (a bug)");
     for (int k = 1; k < n; ++k)
         if (std::fabs(found[k].F - found[0].F) > tie)
-            throw InvariantError("Riemann solver: two admissible interface fluxes " + format_number(found[0].F, 17) +
-                                   " and " + format_number(found[k].F, 17) + " (a bug)");
+            throw InvariantError("Riemann solver: two admissible interface fluxes " + format_number(found[0].F, 17) + " and " +
+                                 format_number(found[k].F, 17) + " (a bug)");
     return found[0];
 }
 
@@ -128,9 +128,8 @@ RiemannSolution mirrored(const RiemannSolution& m) {
 
 void require_state(const FluxSide& s, const char* side) {
     if (!(s.Phi > 0.0 && s.phi >= 0.0 && s.phi <= s.Phi && std::isfinite(s.Phi) && std::isfinite(s.a)))
-        throw InputError(std::string("Riemann solver: state ") + side + " = (phi " + format_number(s.phi) +
-                                    ", Phi " + format_number(s.Phi) + ", a " + format_number(s.a) +
-                                    ") is outside 0 <= phi <= Phi, Phi > 0");
+        throw InputError(std::string("Riemann solver: state ") + side + " = (phi " + format_number(s.phi) + ", Phi " +
+                         format_number(s.Phi) + ", a " + format_number(s.a) + ") is outside 0 <= phi <= Phi, Phi > 0");
 }
 
 }  // namespace
@@ -148,9 +147,12 @@ RiemannSolution solve_riemann(const FluxSide& L, const FluxSide& R) {
 
 const char* wave_kind_name(WaveKind kind) {
     switch (kind) {
-        case WaveKind::shock: return "shock";
-        case WaveKind::rarefaction: return "rarefaction";
-        case WaveKind::standing: return "standing";
+        case WaveKind::shock:
+            return "shock";
+        case WaveKind::rarefaction:
+            return "rarefaction";
+        case WaveKind::standing:
+            return "standing";
     }
     return "?";
 }

@@ -5,9 +5,7 @@
 
 namespace granseg {
 
-InterfaceStates mean_interface(const FluxSide& L, const FluxSide& R) {
-    return {L, R, 0.5 * (L.Phi + R.Phi), 0.5 * (L.a + R.a)};
-}
+InterfaceStates mean_interface(const FluxSide& L, const FluxSide& R) { return {L, R, 0.5 * (L.Phi + R.Phi), 0.5 * (L.a + R.a)}; }
 
 double modified_godunov_flux(const InterfaceStates& q) {
     const FluxSide &L = q.L, &R = q.R;
@@ -51,8 +49,8 @@ double classic_godunov_flux(const InterfaceStates& q) {
 
 double rusanov_flux(const InterfaceStates& q) {
     const FluxSide &L = q.L, &R = q.R;
-    const double alpha = std::max(std::fabs(segregation_speed(L.phi, L.Phi, L.a)),
-                                  std::fabs(segregation_speed(R.phi, R.Phi, R.a)));  // (eq. 55)
+    const double alpha =
+        std::max(std::fabs(segregation_speed(L.phi, L.Phi, L.a)), std::fabs(segregation_speed(R.phi, R.Phi, R.a)));  // (eq. 55)
     return 0.5 * (segregation_flux(L.phi, L.Phi, L.a) + segregation_flux(R.phi, R.Phi, R.a)) - 0.5 * alpha * (R.phi - L.phi);
 }
 

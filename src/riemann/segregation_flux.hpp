@@ -31,14 +31,10 @@
 namespace granseg {
 
 /// f(phi; Phi, a) = a phi (phi - Phi)/Phi (eqs. 49, 66); 0 where there is no material (Phi <= 0).
-inline double segregation_flux(double phi, double Phi, double a) {
-    return Phi > 0.0 ? a * phi * (phi - Phi) / Phi : 0.0;
-}
+inline double segregation_flux(double phi, double Phi, double a) { return Phi > 0.0 ? a * phi * (phi - Phi) / Phi : 0.0; }
 
 /// df/dphi = a (2 phi/Phi - 1), the eigenvalue lambda_1 of eq. (55).
-inline double segregation_speed(double phi, double Phi, double a) {
-    return Phi > 0.0 ? a * (2.0 * phi / Phi - 1.0) : 0.0;
-}
+inline double segregation_speed(double phi, double Phi, double a) { return Phi > 0.0 ? a * (2.0 * phi / Phi - 1.0) : 0.0; }
 
 /// One side of a cell interface: small-particle fraction, granular fraction, flux coefficient.
 struct FluxSide {

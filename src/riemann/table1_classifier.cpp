@@ -14,19 +14,17 @@ int convex_case(const FluxSide& L, const FluxSide& R) {
     const double fR_min = flux_extremum(R.Phi, R.a);
     const bool R_left = R.phi < gamma_phi(R.Phi);
     if (L.phi <= gamma_phi(L.Phi)) {
-        if (f_R < fL_min) return 3;              // C
-        if (R_left) return f_R > f_L ? 1 : 2;    // A, B
-        if (fR_min <= fL_min) return 4;          // D
-        return fR_min < f_L ? 5 : 6;             // E, F
+        if (f_R < fL_min) return 3;            // C
+        if (R_left) return f_R > f_L ? 1 : 2;  // A, B
+        if (fR_min <= fL_min) return 4;        // D
+        return fR_min < f_L ? 5 : 6;           // E, F
     }
-    if (f_R < f_L) return 8;                     // H
-    if (R_left) return 7;                        // G
-    return fR_min < f_L ? 9 : 10;                // I, J
+    if (f_R < f_L) return 8;       // H
+    if (R_left) return 7;          // G
+    return fR_min < f_L ? 9 : 10;  // I, J
 }
 
-Table1Case make_case(int number, bool mirrored) {
-    return {number, static_cast<char>('A' + number - 1), mirrored};
-}
+Table1Case make_case(int number, bool mirrored) { return {number, static_cast<char>('A' + number - 1), mirrored}; }
 
 }  // namespace
 

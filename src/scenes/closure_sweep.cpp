@@ -24,10 +24,20 @@ struct ClosureSweep : SceneJob {
             for (std::size_t b = 0; b < Phis.size(); ++b) {
                 const double t = T[a * Phis.size() + b];
                 const ClosureValues v = evaluate_closures(material, Phis[b], phi_hats[a], t);
-                table.row({{"phi_hat", phi_hats[a]}, {"Phi", Phis[b]}, {"T", t}, {"Phi_rcp", v.Phi_rcp},
-                            {"Phi_co", v.Phi_co}, {"g", v.g}, {"p_k", v.p_k}, {"p_y", v.p_y}, {"p", v.p},
-                            {"eta", v.eta}, {"lambda", v.lambda}, {"eps", v.eps}, {"dissipation", v.dissipation},
-                            {"c", std::sqrt(v.c2)}});
+                table.row({{"phi_hat", phi_hats[a]},
+                           {"Phi", Phis[b]},
+                           {"T", t},
+                           {"Phi_rcp", v.Phi_rcp},
+                           {"Phi_co", v.Phi_co},
+                           {"g", v.g},
+                           {"p_k", v.p_k},
+                           {"p_y", v.p_y},
+                           {"p", v.p},
+                           {"eta", v.eta},
+                           {"lambda", v.lambda},
+                           {"eps", v.eps},
+                           {"dissipation", v.dissipation},
+                           {"c", std::sqrt(v.c2)}});
             }
             table.blank();
             table.blank();
@@ -53,9 +63,11 @@ std::unique_ptr<SceneJob> prepare_closure_sweep(const SceneFile& scene) {
     for (double x : job->phi_hats)
         if (job->material.packing.Phi_rcp(x) < lowest_rcp) lowest_rcp = job->material.packing.Phi_rcp(x), at = x;
     if (!(Phi_max > Phi_min))
-        scene.fail(s, "Phi_max", format_number(Phi_max) + " <= Phi_min = " + format_number(Phi_min), "Phi_min < Phi_max < Phi_rcp");
+        scene.fail(s, "Phi_max", format_number(Phi_max) + " <= Phi_min = " + format_number(Phi_min),
+                   "Phi_min < Phi_max < Phi_rcp");
     if (!(Phi_max < lowest_rcp))
-        scene.fail(s, "Phi_max", format_number(Phi_max) + " >= Phi_rcp(phi_hat = " + format_number(at) + ") = " + format_number(lowest_rcp),
+        scene.fail(s, "Phi_max",
+                   format_number(Phi_max) + " >= Phi_rcp(phi_hat = " + format_number(at) + ") = " + format_number(lowest_rcp),
                    "Phi_min < Phi_max < Phi_rcp for every phi_hat");
 
     for (long i = 0; i < points; ++i) job->Phis.push_back(Phi_min + (Phi_max - Phi_min) * i / (points - 1));
@@ -63,7 +75,8 @@ std::unique_ptr<SceneJob> prepare_closure_sweep(const SceneFile& scene) {
         for (double Phi : job->Phis) {
             const double t = T({Phi, x});
             if (!(t >= 0.0) || !std::isfinite(t))
-                scene.fail(s, "T", "T = " + format_number(t) + " at Phi = " + format_number(Phi) + ", phi_hat = " + format_number(x),
+                scene.fail(s, "T",
+                           "T = " + format_number(t) + " at Phi = " + format_number(Phi) + ", phi_hat = " + format_number(x),
                            "finite T >= 0 at every point");
             job->T.push_back(t);
         }

@@ -14,15 +14,18 @@ namespace granseg {
 FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     const std::string s = "flow";
     FlowSettings f;
-    f.time_stepping = parse_choice(kTimeSteppings, scene.choice(s, "time_stepping", choice_names(kTimeSteppings),
-                                                                choice_name(kTimeSteppings, f.time_stepping)),
-                                   "time_stepping");
-    f.viscosity = parse_choice(kViscositySolves, scene.choice(s, "viscosity", choice_names(kViscositySolves),
-                                                              choice_name(kViscositySolves, viscosity_solve(f))),
-                               "viscosity");
-    f.factorisation = parse_choice(kFactorisations, scene.choice(s, "factorisation", choice_names(kFactorisations),
-                                                                 choice_name(kFactorisations, f.factorisation)),
-                                   "factorisation");
+    f.time_stepping =
+        parse_choice(kTimeSteppings,
+                     scene.choice(s, "time_stepping", choice_names(kTimeSteppings), choice_name(kTimeSteppings, f.time_stepping)),
+                     "time_stepping");
+    f.viscosity = parse_choice(
+        kViscositySolves,
+        scene.choice(s, "viscosity", choice_names(kViscositySolves), choice_name(kViscositySolves, viscosity_solve(f))),
+        "viscosity");
+    f.factorisation = parse_choice(
+        kFactorisations,
+        scene.choice(s, "factorisation", choice_names(kFactorisations), choice_name(kFactorisations, f.factorisation)),
+        "factorisation");
     f.cfl = scene.number(s, "cfl", Range::left_open(0, 1), f.cfl);
     f.T_floor = scene.number(s, "T_floor", Range::open(0, 1e-2), f.T_floor);
     f.Phi_vacuum = scene.number(s, "Phi_vacuum", Range::open(0, 1e-3), f.Phi_vacuum);
@@ -30,9 +33,9 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.dt_max = scene.number(s, "dt_max", Range::open(0, 10), f.dt_max);
     f.pressure_tolerance = scene.number(s, "pressure_tolerance", Range::open(0, 1), f.pressure_tolerance);
     if (mixture) f.phi_hat = scene.number(s, "phi_hat", Range::closed(0, 1), f.phi_hat);
-    f.transport = parse_choice(kTransports, scene.choice(s, "transport", choice_names(kTransports),
-                                                         choice_name(kTransports, transport_scheme(f))),
-                               "transport");
+    f.transport = parse_choice(
+        kTransports, scene.choice(s, "transport", choice_names(kTransports), choice_name(kTransports, transport_scheme(f))),
+        "transport");
     f.limiter = parse_limiter(scene.choice(s, "limiter", limiter_names(), limiter_name(f.limiter)));
     if (transport_scheme(f) == Transport::muscl && f.time_stepping != TimeStepping::semi_implicit)
         scene.fail(s, "transport", "\"muscl\" with time_stepping = \"explicit\"",
@@ -65,8 +68,11 @@ struct FlowJob : SceneJob {
             for (int side = 0; side < 2; ++side) solver.set_wall_velocity(a, side, walls[a][side]);
         solver.set_state(Phi, u, T);
         DataTable history;
-        history.comment(label + ": mass = sum Phi dV (m^3 per m^(3-d)), mass_change relative to t = 0, kinetic energy sum Phi |u|^2/2 dV (rho* = 1)");
-        double mass0 = solver.mass(), next = 0.0;  // rows every t_end/history_samples (from the checkpoint's next on, after a resume)
+        history.comment(
+            label +
+            ": mass = sum Phi dV (m^3 per m^(3-d)), mass_change relative to t = 0, kinetic energy sum Phi |u|^2/2 dV (rho* = 1)");
+        double mass0 = solver.mass(),
+               next = 0.0;  // rows every t_end/history_samples (from the checkpoint's next on, after a resume)
         auto sample = [&] {
             if (solver.time() < next && solver.time() < t_end) return;
             next += t_end / history_samples;
@@ -74,18 +80,24 @@ struct FlowJob : SceneJob {
             double PhiT = 0.0, sum = 0.0;
             for (std::size_t c = 0; c < grid.cells(); ++c)
                 if (grid.is_inside(c)) PhiT += solver.Phi()[c] * solver.T()[c], sum += solver.Phi()[c];
-            history.row({{"t", solver.time()}, {"steps", static_cast<double>(solver.steps())},
-                          {"mass", solver.mass()}, {"mass_change", solver.mass() / mass0 - 1.0},
-                          {"kinetic_energy", d.kinetic_energy}, {"max_speed", d.max_speed},
-                          {"T_mean", sum > 0 ? PhiT / sum : 0.0}, {"dt", solver.last_dt()}});
+            history.row({{"t", solver.time()},
+                         {"steps", static_cast<double>(solver.steps())},
+                         {"mass", solver.mass()},
+                         {"mass_change", solver.mass() / mass0 - 1.0},
+                         {"kinetic_energy", d.kinetic_energy},
+                         {"max_speed", d.max_speed},
+                         {"T_mean", sum > 0 ? PhiT / sum : 0.0},
+                         {"dt", solver.last_dt()}});
         };
         const RunState state = [&](StateIO& io) { io("flow", solver)("history", history)("mass0", mass0)("next", next); };
         if (!checkpoints_or_none(checkpoints).resume(t_end, state)) sample();
         advance_flow(solver, t_end, label, sample, checkpoints, state);
         OutputSet out;
         out.add("history.dat", history);
-        if (grid.n[0] == 1 && grid.n[1] == 1) out.add("profile.dat", flow_column_table(solver));
-        else out.add("fields.dat", flow_field_table(solver, false));
+        if (grid.n[0] == 1 && grid.n[1] == 1)
+            out.add("profile.dat", flow_column_table(solver));
+        else
+            out.add("fields.dat", flow_field_table(solver, false));
         return out;
     }
 };
@@ -103,15 +115,17 @@ Grid read_box(const SceneFile& scene, bool plane, bool periodic_x) {
 }
 
 /// Fills `field` from an expression in x, z at every cell centre; every value must lie in `range`.
-void fill(const SceneFile& scene, const std::string& section, const std::string& key, const Expression& e,
-          const Grid& g, std::vector<double>& field, const Range& range) {
+void fill(const SceneFile& scene, const std::string& section, const std::string& key, const Expression& e, const Grid& g,
+          std::vector<double>& field, const Range& range) {
     field.assign(g.cells(), 0.0);
     for (int k = 0; k < g.n[2]; ++k)
         for (int i = 0; i < g.n[0]; ++i) {
             const double v = e({g.center(0, i), g.center(2, k)});
             if (!range.contains(v))
-                scene.fail(section, key, format_number(v) + " at x = " + format_number(g.center(0, i)) + ", z = " +
-                                             format_number(g.center(2, k)), range.describe(key));
+                scene.fail(
+                    section, key,
+                    format_number(v) + " at x = " + format_number(g.center(0, i)) + ", z = " + format_number(g.center(2, k)),
+                    range.describe(key));
             field[g.index(i, 0, k)] = v;
         }
 }
@@ -127,9 +141,7 @@ std::unique_ptr<FlowJob> common(const SceneFile& scene, const std::string& label
 }
 
 /// Phi must stay below Phi_rcp(phi_hat) of the [flow] mixture.
-Range packing_range(const FlowJob& job) {
-    return Range::right_open(0, job.material.packing.Phi_rcp(job.settings.phi_hat));
-}
+Range packing_range(const FlowJob& job) { return Range::right_open(0, job.material.packing.Phi_rcp(job.settings.phi_hat)); }
 
 }  // namespace
 
@@ -152,7 +164,8 @@ std::unique_ptr<SceneJob> prepare_simple_shear(const SceneFile& scene) {
     job->walls[2][1] = {0.5 * U, 0.0, 0.0};
     const double Phi = scene.number(s, "Phi", packing_range(*job));
     job->Phi.assign(job->grid.cells(), Phi);
-    const double T = scene.number(s, "T", Range::at_least(0), steady_shear_temperature(job->material, U / job->grid.n[2] / job->grid.h[2]));
+    const double T =
+        scene.number(s, "T", Range::at_least(0), steady_shear_temperature(job->material, U / job->grid.n[2] / job->grid.h[2]));
     job->T.assign(job->grid.cells(), T);
     return job;
 }

@@ -53,7 +53,6 @@ const std::vector<SceneKind>& scene_kinds();
 /// Throws InputError (bad input) or InvariantError (broken invariant) before writing anything.
 /// A kind that steps in time resumes from its checkpoint as `resume` says, and after a stop
 /// signal throws Interrupted (its checkpoint written, no outputs).
-std::vector<std::string> run_scene_file(const std::string& path, const std::string& output_dir = "",
-                                        Resume resume = Resume::no);
+std::vector<std::string> run_scene_file(const std::string& path, const std::string& output_dir = "", Resume resume = Resume::no);
 
 }  // namespace granseg

@@ -49,10 +49,9 @@ struct Segregation1d : SceneJob {
         table.comment("segregation1d: scheme " + scheme_name(options.scheme) + ", t = " + format_number(t_end) +
                       ", cfl = " + format_number(options.cfl) + ", " + std::to_string(steps) + " steps, " +
                       std::to_string(solver.cell_updates()) + " cell updates");
-        table.comment("max over the run of phi - Phi: " + format_number(bounds.max_excess, 4) +
-                      "; min of phi: " + format_number(bounds.min_phi, 4) + "; round-off clip: " +
-                      format_number(solver.largest_correction(), 3) + "; relative change of sum(phi): " +
-                      format_number((total_amount(column.grid, phi) - mass0) / mass0, 3));
+        table.comment("max over the run of phi - Phi: " + format_number(bounds.max_excess, 4) + "; min of phi: " +
+                      format_number(bounds.min_phi, 4) + "; round-off clip: " + format_number(solver.largest_correction(), 3) +
+                      "; relative change of sum(phi): " + format_number((total_amount(column.grid, phi) - mass0) / mass0, 3));
         for (std::size_t k = 0; k < phi.size(); ++k)
             table.row({{"z", column.z[k]}, {"Phi", column.fields.Phi[k]}, {"T", column.T[k]}, {"phi", phi[k]}});
         OutputSet out;
@@ -63,8 +62,8 @@ struct Segregation1d : SceneJob {
 
 /// Evaluates `f` at every point, failing with "[initial] KEY: ... at z = ..." at the first bad one.
 void require_at_points(const SceneFile& scene, const std::string& key, const std::vector<double>& z,
-                       const std::function<double(double)>& f, const std::function<bool(double)>& ok,
-                       const std::string& allowed, const char* where) {
+                       const std::function<double(double)>& f, const std::function<bool(double)>& ok, const std::string& allowed,
+                       const char* where) {
     for (double p : z) {
         const double v = f(p);
         if (!ok(v))
@@ -83,7 +82,8 @@ std::unique_ptr<SceneJob> prepare_segregation1d(const SceneFile& scene) {
     job->t_end = scene.number("time", "end", Range::above(0));
     job->options.cfl = scene.number("time", "cfl", Range::above(0), 0.9);
     if (job->options.cfl > 1.0)
-        scene.fail("time", "cfl", format_number(job->options.cfl) + " > 1: the step would exceed the largest one that keeps 0 <= phi <= Phi",
+        scene.fail("time", "cfl",
+                   format_number(job->options.cfl) + " > 1: the step would exceed the largest one that keeps 0 <= phi <= Phi",
                    "0 < cfl <= 1");
     setup.S = scene.number("segregation", "S", Range::at_least(0), 1.0);
     setup.D = scene.number("segregation", "D", Range::at_least(0), 0.0);
@@ -118,8 +118,8 @@ std::unique_ptr<SceneJob> prepare_segregation1d(const SceneFile& scene) {
         const double v = phi({centres[k], Phi_k, T_k});
         if (!(v >= 0.0 && v <= Phi_k))
             scene.fail("initial", "phi",
-                       "phi = " + format_number(v) + " outside [0, Phi = " + format_number(Phi_k) + "] at z = " +
-                           format_number(centres[k]) + " (cell centre)",
+                       "phi = " + format_number(v) + " outside [0, Phi = " + format_number(Phi_k) +
+                           "] at z = " + format_number(centres[k]) + " (cell centre)",
                        "0 <= phi <= Phi everywhere on the grid");
         job->phi.push_back(v);
     }

@@ -58,11 +58,13 @@ std::string read_flow_source(const SceneFile& scene, double t_end) {
             const auto it = theirs.find(key);
             const std::string other = it == theirs.end() ? "none" : it->second;
             if (scene.has("drum", key.substr(7)) == given && !alike(value, other))
-                scene.fail("initial", "flow", path + " is a drum with " + key + " = " + other + ", this scene's has " + value, allowed);
+                scene.fail("initial", "flow", path + " is a drum with " + key + " = " + other + ", this scene's has " + value,
+                           allowed);
         }
     if (!(t_end > c.t))
-        scene.fail("run", "t_end", format_number(t_end, 17) + " s is not after the time of [initial] flow, " +
-                                       format_number(c.t, 17) + " s", "t_end > " + format_number(c.t, 17) + " (the run continues the flow's clock)");
+        scene.fail("run", "t_end",
+                   format_number(t_end, 17) + " s is not after the time of [initial] flow, " + format_number(c.t, 17) + " s",
+                   "t_end > " + format_number(c.t, 17) + " (the run continues the flow's clock)");
     return path;
 }
 

@@ -52,7 +52,8 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     s.S = scene.number(seg, "S", Range::at_least(0), s.S);
     s.segregation.scheme = parse_scheme(scene.choice(seg, "scheme", scheme_names(), "modified-godunov"));
     if (!preserves_bounds(s.segregation.scheme))
-        scene.fail(seg, "scheme", "\"" + scheme_name(s.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
+        scene.fail(seg, "scheme",
+                   "\"" + scheme_name(s.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
                    bounded_scheme_names());
     s.segregation.limiter = parse_limiter(scene.choice(seg, "limiter", limiter_names(), "mc"));
     s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
@@ -80,11 +81,13 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     for_each_bed_cell(grid, [&](const BedCell& b) {
         const double v = s.phi_hat0(b.x, b.z);
         if (fill[b.c] > 0.0 && !(v >= 0.0 && v <= 1.0))
-            scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+            scene.fail("initial", "phi_hat",
+                       "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
                        "0 <= phi_hat <= 1 wherever the drum holds material");
         const double tau = s.tracer0 ? s.tracer0(b.x, b.z) : 0.0;
         if (!(tau >= 0.0 && tau <= 1.0))
-            scene.fail("initial", "tracer", "tracer = " + format_number(tau) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+            scene.fail("initial", "tracer",
+                       "tracer = " + format_number(tau) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
                        "0 <= tracer <= 1 in the drum");
     });
     try {

@@ -27,11 +27,18 @@ constexpr double kMinInscribedCells = 8.0;
 class FlowDrumRecord {
 public:
     FlowDrumRecord(const FlowSolver& solver, const DrumSpec& drum, const DrumRun& run, double Phi_level)
-        : solver_(solver), drum_(drum), run_(run), shape_(drum.cross_section()), Phi_level_(Phi_level),
-          v_flow_(drum.flowing_speed()), mass0_(solver.mass()), angle_(run.angle_from), layer_(run.angle_from) {
+        : solver_(solver),
+          drum_(drum),
+          run_(run),
+          shape_(drum.cross_section()),
+          Phi_level_(Phi_level),
+          v_flow_(drum.flowing_speed()),
+          mass0_(solver.mass()),
+          angle_(run.angle_from),
+          layer_(run.angle_from) {
         history_.comment("tumbler-flow: rotating-frame diagnostics; surface = Phi " + format_number(Phi_level_) +
-                         " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8); flowing = |u| > " + format_number(v_flow_) +
-                         " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
+                         " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8); flowing = |u| > " +
+                         format_number(v_flow_) + " m/s; layer_thickness: area of the flowing bed over the surface's chord (m)");
     }
 
     /// Records what is due at the solver's time: a history row, a VTK snapshot.
@@ -47,7 +54,8 @@ public:
 
     /// Saves or restores (core/state_io.hpp) what the record has taken so far; the rest is set-up.
     void checkpoint(StateIO& io) {
-        io("record.mass0", mass0_)("record.angle", angle_)("record.layer", layer_)("record.history", history_)("record.out", out_);
+        io("record.mass0", mass0_)("record.angle", angle_)("record.layer", layer_)("record.history", history_)("record.out",
+                                                                                                               out_);
         io("record.snapshot", snapshot_)("record.next_history", next_history_)("record.next_snapshot", next_snapshot_);
     }
 
@@ -70,25 +78,39 @@ private:
         const double thickness = flowing_layer_thickness(d, shape_);
         angle_.add(s.time(), d.surface_angle_deg);
         layer_.add(s.time(), thickness);
-        history_.row({{"t", s.time()}, {"steps", static_cast<double>(s.steps())}, {"surface_angle_deg", d.surface_angle_deg},
-                      {"surface_points", static_cast<double>(d.surface_points)}, {"flowing_fraction", d.flowing_fraction},
-                      {"max_speed", d.max_speed}, {"kinetic_energy", d.kinetic_energy}, {"mass", s.mass()},
-                      {"mass_change", s.mass() / mass0_ - 1.0}, {"dt", s.last_dt()}, {"layer_thickness", thickness}});
+        history_.row({{"t", s.time()},
+                      {"steps", static_cast<double>(s.steps())},
+                      {"surface_angle_deg", d.surface_angle_deg},
+                      {"surface_points", static_cast<double>(d.surface_points)},
+                      {"flowing_fraction", d.flowing_fraction},
+                      {"max_speed", d.max_speed},
+                      {"kinetic_energy", d.kinetic_energy},
+                      {"mass", s.mass()},
+                      {"mass_change", s.mass() / mass0_ - 1.0},
+                      {"dt", s.last_dt()},
+                      {"layer_thickness", thickness}});
     }
 
     DataTable summary(const RunTime& cost) const {
         const FlowSolver& s = solver_;
-        TableRow values{{"t_end", s.time()}, {"steps", static_cast<double>(s.steps())}, {"angle_mean_deg", angle_.mean()},
-                        {"angle_std_deg", angle_.std_dev()}, {"samples", static_cast<double>(angle_.samples())},
-                        {"mass_change", s.mass() / mass0_ - 1.0}, {"layer_mean", layer_.mean()},
-                        {"layer_std", layer_.std_dev()}, {"inside_cells", static_cast<double>(s.grid().inside_cells())}};
+        TableRow values{{"t_end", s.time()},
+                        {"steps", static_cast<double>(s.steps())},
+                        {"angle_mean_deg", angle_.mean()},
+                        {"angle_std_deg", angle_.std_dev()},
+                        {"samples", static_cast<double>(angle_.samples())},
+                        {"mass_change", s.mass() / mass0_ - 1.0},
+                        {"layer_mean", layer_.mean()},
+                        {"layer_std", layer_.std_dev()},
+                        {"inside_cells", static_cast<double>(s.grid().inside_cells())}};
         append_flow_work(s, values);
         append_run_time(cost, values);
         DataTable summary;
-        summary.comment("dynamic angle of repose: mean of the surface angle over t >= " +
-                        format_number(run_.angle_from) + " s; layer: mean thickness of the flowing layer (m) over the same "
+        summary.comment("dynamic angle of repose: mean of the surface angle over t >= " + format_number(run_.angle_from) +
+                        " s; layer: mean thickness of the flowing layer (m) over the same "
                         "samples; mass_change relative; inside_cells: cells of the drum; steps_X: steps whose dt the bound X "
-                        "set (docs/flow_solver.md, stage step_size); pressure_solves, newton, krylov, temperature_iterations: the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
+                        "set (docs/flow_solver.md, stage step_size); pressure_solves, newton, krylov, temperature_iterations: "
+                        "the solves' iteration counts; seconds_S: wall-clock seconds of each stage S of the step; wall_seconds, "
+                        "cpu_seconds (all threads), threads: the run's cost");
         summary.row(values);
         return summary;
     }
@@ -98,8 +120,8 @@ private:
     const DrumRun& run_;
     const DrumShape shape_;
     const double Phi_level_, v_flow_;
-    double mass0_;                  // before the first sample
-    TimeAverage angle_, layer_;                 // time averages from angle_from
+    double mass0_;               // before the first sample
+    TimeAverage angle_, layer_;  // time averages from angle_from
     DataTable history_;
     OutputSet out_;
     int snapshot_ = 0;
@@ -120,7 +142,8 @@ struct TumblerFlow : SceneJob {
         FlowDrumRecord record(solver, drum, run_options, surface_level(material, settings.phi_hat));
         const RunState state = [&](StateIO& io) { io("flow", solver)("record", record); };
         if (!checkpoints_or_none(checkpoints).resume(run_options.t_end, state)) record.sample();
-        const RunTime cost = advance_flow(solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); }, checkpoints, state);
+        const RunTime cost = advance_flow(
+            solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); }, checkpoints, state);
         return record.finish(cost);
     }
 
@@ -149,7 +172,8 @@ void read_drum_shape(const SceneFile& scene, DrumSpec& d) {
         scene.fail(s, "cells_per_diameter",
                    std::to_string(d.cells_per_diameter) + " cells leave " + format_number(across, 3) +
                        " across the polygon's inscribed circle, its smallest feature",
-                   "cells_per_diameter >= " + std::to_string(static_cast<int>(std::ceil(kMinInscribedCells / std::cos(M_PI / d.sides)))));
+                   "cells_per_diameter >= " +
+                       std::to_string(static_cast<int>(std::ceil(kMinInscribedCells / std::cos(M_PI / d.sides)))));
 }
 
 }  // namespace
@@ -165,8 +189,9 @@ DrumSpec read_drum(const SceneFile& scene) {
     d.fill_height = scene.number(s, "fill_height", Range::open(0, height), 0.75 * height);
     // A bed and a space above it, each at least two cells deep, so the surface has cells on both sides.
     if (!(d.fill_height >= 2 * h && height - d.fill_height >= 2 * h))
-        scene.fail(s, "fill_height", format_number(d.fill_height) + " m leaves " +
-                                         (d.fill_height < 2 * h ? "less than two cells of bed" : "less than two cells of space above the bed"),
+        scene.fail(s, "fill_height",
+                   format_number(d.fill_height) + " m leaves " +
+                       (d.fill_height < 2 * h ? "less than two cells of bed" : "less than two cells of space above the bed"),
                    format_number(2 * h) + " <= fill_height <= " + format_number(height - 2 * h) + " (two cells of " +
                        format_number(h) + " m below and above the surface)");
     d.rps = scene.number(s, "rps", Range::closed(-100, 100), d.rps);

@@ -35,15 +35,19 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     drum.repose_angle = scene.number("drum", "repose_angle", Range::right_open(0, 90), drum.repose_angle);
     drum.layer_thickness = scene.number("drum", "layer_thickness", Range::above(0), drum.layer_thickness);
     {
-        const double R = drum.diameter / 2, d = (2 * drum.fill_fraction - 1) * R, limit = std::min(std::sqrt(R * R - d * d), R + d);
+        const double R = drum.diameter / 2, d = (2 * drum.fill_fraction - 1) * R,
+                     limit = std::min(std::sqrt(R * R - d * d), R + d);
         if (!(drum.layer_thickness < limit))
-            scene.fail("drum", "layer_thickness", format_number(drum.layer_thickness) + " m is not below min(half chord, bed depth) = " +
-                                                      format_number(limit) + " m",
+            scene.fail("drum", "layer_thickness",
+                       format_number(drum.layer_thickness) +
+                           " m is not below min(half chord, bed depth) = " + format_number(limit) + " m",
                        "0 < layer_thickness < " + format_number(limit));
         if (R / k.cells_per_diameter * 2 > drum.layer_thickness)
-            scene.fail("drum", "cells_per_diameter", std::to_string(k.cells_per_diameter) + " cells leave the flowing layer unresolved (cell size " +
-                                                         format_number(drum.diameter / k.cells_per_diameter) + " m > layer_thickness)",
-                       "cells_per_diameter >= diameter/layer_thickness = " + format_number(std::ceil(drum.diameter / drum.layer_thickness)));
+            scene.fail("drum", "cells_per_diameter",
+                       std::to_string(k.cells_per_diameter) + " cells leave the flowing layer unresolved (cell size " +
+                           format_number(drum.diameter / k.cells_per_diameter) + " m > layer_thickness)",
+                       "cells_per_diameter >= diameter/layer_thickness = " +
+                           format_number(std::ceil(drum.diameter / drum.layer_thickness)));
     }
     k.Phi = scene.number("drum", "Phi", Range::open(0, 1), k.Phi);
     s.run.t_end = scene.number("time", "end", Range::above(0));
@@ -54,7 +58,8 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     k.segregation.scheme = parse_scheme(scene.choice("segregation", "scheme", scheme_names(), "modified-godunov"));
     k.segregation.limiter = parse_limiter(scene.choice("segregation", "limiter", limiter_names(), "mc"));
     if (!preserves_bounds(k.segregation.scheme))
-        scene.fail("segregation", "scheme", "\"" + scheme_name(k.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
+        scene.fail("segregation", "scheme",
+                   "\"" + scheme_name(k.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
                    bounded_scheme_names());
     k.bulk = parse_bulk_scheme(scene.choice("bulk", "scheme", bulk_scheme_names(), "fct"));
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
@@ -75,7 +80,8 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     for_each_bed_cell(fields.grid, [&](const BedCell& b) {
         const double v = k.phi_hat0(b.x, b.z);
         if (!(v >= 0.0 && v <= 1.0))
-            scene.fail("initial", "phi_hat", "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
+            scene.fail("initial", "phi_hat",
+                       "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
                        "0 <= phi_hat <= 1 at every bed cell");
     });
     return s;
@@ -99,7 +105,8 @@ OutputSet tumbler_kinematic_outputs(const KinematicTumbler& tumbler, const Tumbl
     for (std::size_t n = 0; n < result.frames.size(); ++n) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%03zu.dat", n + 1);
-        out.add(name, composition_cells(g, result.frames[n].phi_hat, "phi_hat at t = " + format_number(result.frames[n].t) + " s"));
+        out.add(name,
+                composition_cells(g, result.frames[n].phi_hat, "phi_hat at t = " + format_number(result.frames[n].t) + " s"));
     }
     return out;
 }

@@ -58,11 +58,9 @@ void BulkTransport::donor_cell_fluxes(int axis, const std::vector<double>& M, co
             G[f] = M[f] * hat[M[f] > 0.0 ? lower : upper];
             return;
         }
-        if ((lower != kNoCell && !lower_in) || (upper != kNoCell && !upper_in) || (!lower_in && !upper_in))
-            throw wall_flux(f);
+        if ((lower != kNoCell && !lower_in) || (upper != kNoCell && !upper_in) || (!lower_in && !upper_in)) throw wall_flux(f);
         const bool outflow = lower_in ? M[f] > 0.0 : M[f] < 0.0;
-        if (!outflow && inflow.empty())
-            throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
+        if (!outflow && inflow.empty()) throw InputError("bulk transport: inflow through a domain boundary needs inflow_phi_hat");
         G[f] = M[f] * (outflow ? hat[lower_in ? lower : upper] : inflow[f]);
     };
     for_each_line(g, axis, [&](std::size_t cell0, std::size_t face0) {
@@ -121,13 +119,12 @@ double BulkTransport::step(const std::vector<double>& Phi_old, const FaceFieldRe
     return dt * parallel_fold(parallel_, rows, 0.0, row, [](double a, double b) { return std::max(a, b); });
 }
 
-void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
-                    const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi) {
+void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M, const FaceFields& inflow_phi_hat,
+                    double dt, std::vector<double>& phi) {
     BulkTransport(grid).step(Phi_old, refs(M), inflow_phi_hat, dt, phi);
 }
 
-double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFieldRefs& M, double cfl,
-                      double Phi_min) {
+double bulk_time_step(const Grid& grid, const std::vector<double>& Phi_old, const FaceFieldRefs& M, double cfl, double Phi_min) {
     std::vector<double> outflow(grid.cells(), 0.0);  // sum_out |M|/h per cell
     for (int axis = 0; axis < 3; ++axis) {
         if (M[axis] == nullptr || M[axis]->empty()) continue;

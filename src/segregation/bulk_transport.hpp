@@ -56,8 +56,8 @@ private:
 };
 
 /// One bulk step with a BulkTransport of its own (arguments and exceptions as BulkTransport::step).
-void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M,
-                    const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi);
+void transport_bulk(const Grid& grid, const std::vector<double>& Phi_old, const FaceFields& M, const FaceFields& inflow_phi_hat,
+                    double dt, std::vector<double>& phi);
 
 /// cfl times the largest dt with dt sum_out |M|/h <= Phi_old in every inside cell with
 /// Phi_old >= Phi_min (+infinity if nothing flows out of any of them).

@@ -19,9 +19,8 @@ FctBulkTransport::FctBulkTransport(Grid grid, Limiter limiter)
     moved_.assign(open_faces_.size(), 0.0);
 }
 
-double FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vector<double>& Phi_new,
-                              const FaceFieldRefs& M, const FaceFields& inflow_phi_hat, double dt,
-                              std::vector<double>& phi, double Phi_min) {
+double FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vector<double>& Phi_new, const FaceFieldRefs& M,
+                              const FaceFields& inflow_phi_hat, double dt, std::vector<double>& phi, double Phi_min) {
     const std::size_t cells = grid_.cells();
     if (Phi_new.size() != cells) throw InputError("bulk transport: Phi_new needs one value per cell");
     hat_old_.resize(cells), hat_td_.resize(cells), hi_.resize(cells), lo_.resize(cells);
@@ -48,8 +47,10 @@ double FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vec
     for (std::size_t q = 0; q < open_faces_.size(); ++q) {
         const OpenFace& f = open_faces_[q];
         const std::size_t L = f.lower, U = f.upper;
-        hi_[L] = std::max(hi_[L], std::max(hat_old_[U], hat_td_[U])), lo_[L] = std::min(lo_[L], std::min(hat_old_[U], hat_td_[U]));
-        hi_[U] = std::max(hi_[U], std::max(hat_old_[L], hat_td_[L])), lo_[U] = std::min(lo_[U], std::min(hat_old_[L], hat_td_[L]));
+        hi_[L] = std::max(hi_[L], std::max(hat_old_[U], hat_td_[U])),
+        lo_[L] = std::min(lo_[L], std::min(hat_old_[U], hat_td_[U]));
+        hi_[U] = std::max(hi_[U], std::max(hat_old_[L], hat_td_[L])),
+        lo_[U] = std::min(lo_[U], std::min(hat_old_[L], hat_td_[L]));
         const double m = U_[f.axis][f.face] == 0.0 ? 0.0 : (*M[f.axis])[f.face];
         const double face = m > 0.0 ? high_order_.from_lower()[f.axis][f.face] : high_order_.from_upper()[f.axis][f.face];
         const double moved = dt / grid_.h[f.axis] * m * (face - hat_old_[m > 0.0 ? L : U]);
@@ -69,8 +70,8 @@ double FctBulkTransport::step(const std::vector<double>& Phi_old, const std::vec
         const double moved = moved_[q];
         if (moved == 0.0) continue;
         const OpenFace& f = open_faces_[q];
-        const double limited = moved * (moved > 0.0 ? std::min(R_plus_[f.upper], R_minus_[f.lower])
-                                                    : std::min(R_plus_[f.lower], R_minus_[f.upper]));
+        const double limited =
+            moved * (moved > 0.0 ? std::min(R_plus_[f.upper], R_minus_[f.lower]) : std::min(R_plus_[f.lower], R_minus_[f.upper]));
         phi[f.upper] += limited;
         phi[f.lower] -= limited;
     }

@@ -45,8 +45,8 @@ public:
 
 private:
     Grid grid_;
-    BulkTransport donor_;        // the low-order (donor-cell) step
-    MusclHancock high_order_;    // the face values of phi_hat
+    BulkTransport donor_;      // the low-order (donor-cell) step
+    MusclHancock high_order_;  // the face values of phi_hat
     struct OpenFace {
         std::size_t lower, upper, face;
         int axis;

@@ -40,8 +40,8 @@ struct ColumnSetup {
 
 struct Column {
     Grid grid;
-    FrozenFields fields;         // Phi and a_z at the centres, Phi and a_z at the faces
-    std::vector<double> z, T;    // cell centres and T there (for output)
+    FrozenFields fields;       // Phi and a_z at the centres, Phi and a_z at the faces
+    std::vector<double> z, T;  // cell centres and T there (for output)
 };
 
 /// The grid and the frozen fields of a column (Phi, T evaluated at the centres; at the faces as

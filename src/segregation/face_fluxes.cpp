@@ -31,7 +31,7 @@ void segregation_face_fluxes(const Grid& grid, int axis, const FrozenFields& fie
             q.a_face = a_face.empty() ? 0.5 * (a[L] + a[U]) : a_face[f.face];
         }
         double flux = interface_flux(q);  // e.g. eq. (63)
-        if (diffusion > 0.0)  // remixing, -D Phi_face d(phi_hat)/dx (docs/assumptions.md G3)
+        if (diffusion > 0.0)              // remixing, -D Phi_face d(phi_hat)/dx (docs/assumptions.md G3)
             flux -= diffusion * std::min(Phi[L], Phi[U]) * (composition(phi[U], Phi[U]) - composition(phi[L], Phi[L]));
         F[f.face] = flux;
     });

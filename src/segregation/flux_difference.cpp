@@ -2,8 +2,7 @@
 
 namespace granseg {
 
-void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt,
-                           std::vector<double>& u) {
+void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt, std::vector<double>& u) {
     const double ratio = dt / grid.h[axis];
     const std::size_t n = static_cast<std::size_t>(grid.n[axis]);
     const std::size_t stride = grid.stride(axis), face_stride = grid.face_stride(axis);

@@ -67,8 +67,7 @@ void for_each_face(const Grid& grid, int axis, Visit&& visit) {
 }
 
 /// Eq. (64) along `axis` in every inside cell: u -= dt/h_axis (F[upper face] - F[lower face]).
-void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt,
-                           std::vector<double>& u);
+void apply_flux_difference(const Grid& grid, int axis, const std::vector<double>& F, double dt, std::vector<double>& u);
 
 /// The face field of arithmetic means (u_lower + u_upper)/2 of a cell field along `axis`;
 /// on a wall face, the value of the inside neighbour (0 if there is none).

@@ -30,9 +30,8 @@ void BoundsMonitor::observe(const Grid& grid, const std::vector<double>& phi, co
     }
 }
 
-void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction,
-                                  double mass_start, double mass_now, double mass_scale, double mass_tolerance,
-                                  bool check_bounds, double Phi_max) {
+void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction, double mass_start,
+                                  double mass_now, double mass_scale, double mass_tolerance, bool check_bounds, double Phi_max) {
     if (bounds.nonfinite > 0)
         throw InvariantError(context + ": " + std::to_string(bounds.nonfinite) + " non-finite values of phi");
     const double drift = std::fabs(mass_now - mass_start) / (mass_scale > 0.0 ? mass_scale : 1.0);

@@ -32,7 +32,8 @@ struct BoundsMonitor {
     /// Updates the extremes with the inside cells of phi.
     void observe(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi);
     void checkpoint(StateIO& io) {
-        io("max_excess", max_excess)("min_phi", min_phi)("where_excess", where_excess)("where_min", where_min)("nonfinite", nonfinite);
+        io("max_excess", max_excess)("min_phi", min_phi)("where_excess", where_excess)("where_min", where_min)("nonfinite",
+                                                                                                               nonfinite);
     }
 };
 
@@ -46,8 +47,7 @@ constexpr double kBoundRoundOff = 8 * std::numeric_limits<double>::epsilon();
 /// `mass_tolerance`, and, if `check_bounds`, if the scheme left
 /// [0, Phi] by more than kBoundRoundOff * Phi_max before its round-off guard clipped it
 /// (`correction`, SegregationSolver::largest_correction).
-void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction,
-                                  double mass_start, double mass_now, double mass_scale, double mass_tolerance,
-                                  bool check_bounds, double Phi_max);
+void check_segregation_invariants(const std::string& context, const BoundsMonitor& bounds, double correction, double mass_start,
+                                  double mass_now, double mass_scale, double mass_tolerance, bool check_bounds, double Phi_max);
 
 }  // namespace granseg

@@ -32,16 +32,13 @@ struct SchemeRow {
 /// verify_segregation_extensions checks on a smooth solution.
 inline constexpr SchemeRow kSegregationSchemes[] = {
     // name               flux                   order bounded interface values
-    {"modified-godunov",   modified_godunov_flux,  1,   true,   false,
-     "eqs. (61)-(63) with each cell's own flux function (default)"},
-    {"modified-godunov-2", modified_godunov_flux,  2,   true,   false,
+    {"modified-godunov", modified_godunov_flux, 1, true, false, "eqs. (61)-(63) with each cell's own flux function (default)"},
+    {"modified-godunov-2", modified_godunov_flux, 2, true, false,
      "eq. (63) on limited reconstructions of phi_hat, SSP-RK(3,2) (beyond the paper)"},
-    {"classic-upwind",     classic_upwind_flux,    1,   false,  true,
+    {"classic-upwind", classic_upwind_flux, 1, false, true,
      "Murman-Roe upwind flux of one flux function per face (Fig. 6 comparison)"},
-    {"classic-godunov",    classic_godunov_flux,   1,   false,  true,
-     "Godunov flux of one flux function per face (Fig. 6 comparison)"},
-    {"rusanov",            rusanov_flux,           1,   false,  false,
-     "local Lax-Friedrichs with each cell's own flux function (teaching example)"},
+    {"classic-godunov", classic_godunov_flux, 1, false, true, "Godunov flux of one flux function per face (Fig. 6 comparison)"},
+    {"rusanov", rusanov_flux, 1, false, false, "local Lax-Friedrichs with each cell's own flux function (teaching example)"},
 };
 
 /// A segregation scheme: a row of kSegregationSchemes, held by its position.

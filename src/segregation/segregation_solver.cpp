@@ -10,11 +10,10 @@
 
 namespace granseg {
 
-SegregationSolver::SegregationSolver(Grid grid, SegregationOptions options)
-    : grid_(std::move(grid)), options_(options) {
+SegregationSolver::SegregationSolver(Grid grid, SegregationOptions options) : grid_(std::move(grid)), options_(options) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
         throw InputError("segregation: CFL number " + format_number(options_.cfl) +
-                                    " is outside (0, 1]; above 1 the scheme no longer keeps 0 <= phi <= Phi");
+                         " is outside (0, 1]; above 1 the scheme no longer keeps 0 <= phi <= Phi");
     for (std::size_t c = 0; c < grid_.cells(); ++c) inside_cells_ += grid_.is_inside(c);
 }
 
@@ -27,8 +26,8 @@ double SegregationSolver::time_step(const FrozenFields& fields) const {
     for (int axis = 0; axis < 3; ++axis) {
         if (fields.a[axis].empty()) continue;
         const double h = grid_.h[axis];
-        rate = std::max(rate, (reconstruction * max_coefficient(grid_, axis, fields, options_.scheme) / h +
-                               2.0 * fields.D / (h * h)) / ssp);
+        rate = std::max(
+            rate, (reconstruction * max_coefficient(grid_, axis, fields, options_.scheme) / h + 2.0 * fields.D / (h * h)) / ssp);
     }
     return rate > 0.0 ? options_.cfl / rate : std::numeric_limits<double>::infinity();
 }

@@ -60,9 +60,9 @@ void MusclHancock::face_values(const std::vector<double>& q, const FaceFieldRefs
             if (t != kNoCell) lowest = std::min(lowest, field[t]), highest = std::max(highest, field[t]);
             if (b != kNoCell && t != kNoCell) slope[a] = limited_slope(qc - field[b], field[t] - qc, limiter_);
             const double U_lo = velocity[a][cell.lower_face[a]], U_hi = velocity[a][cell.upper_face[a]];
-            rate += (conservative ? U_hi * (qc + 0.5 * slope[a]) - U_lo * (qc - 0.5 * slope[a])
-                                  : 0.5 * (U_lo + U_hi) * slope[a]) /
-                    h_[a];
+            rate +=
+                (conservative ? U_hi * (qc + 0.5 * slope[a]) - U_lo * (qc - 0.5 * slope[a]) : 0.5 * (U_lo + U_hi) * slope[a]) /
+                h_[a];
         }
         const double half_step = qc - 0.5 * dt * rate;  // q half-way through the step
         for (int a = 0; a < 3; ++a) {

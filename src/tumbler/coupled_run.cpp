@@ -101,7 +101,7 @@ private:
     CoupledMeasures last_;
     int snapshot_ = 0, frame_ = 0;
     double next_history_, next_snapshot_, next_frame_;  // from the start
-    const double frame_every_;  // t_end/frames of a run from t = 0 (or from the time it starts at)
+    const double frame_every_;                          // t_end/frames of a run from t = 0 (or from the time it starts at)
 };
 
 CoupledRecord::CoupledRecord(CoupledTumbler& tumbler, const CoupledRunOptions& options)
@@ -131,24 +131,26 @@ CoupledRecord::CoupledRecord(CoupledTumbler& tumbler, const CoupledRunOptions& o
         };
         points_.emplace(tumbler.grid(), flow_.Phi(), level_, mark);
     }
-    history_.comment("tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
-                     "relative to the whole amount at t = 0, sum of Phi); "
-                     "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
-                     format_number(level_) + "; surface angle: fit of the Phi = " + format_number(level_) +
-                     " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8; drum frame); flowing = |u_rel| > " + format_number(v_flow_) +
-                     " m/s; layer_thickness: area of the flowing bed over the surface's chord (m); axis: small-particle "
-                     "share within " + format_number(kAxisShare) + " D of the axis; packing_contrast: Fig. 7d "
-                     "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
-                     "layer's thickness (its mean over t >= angle_from once there, else the present one), cells weighted by "
-                     "their exact area inside each region; tracer_core_layer: the passive tracer's share tau/Phi of the core "
-                     "(NaN without a tracer); points_core_layer: of the material points (four per bed cell at t = 0, carried "
-                     "through the velocity relative to the drum, material_points.hpp) within the core, the share that "
-                     "started where the tracer's share is >= 1/2 (NaN without a tracer)");
+    history_.comment(
+        "tumbler: masses = sum of phi and of Phi - phi times the cell volume (changes since t = 0 "
+        "relative to the whole amount at t = 0, sum of Phi); "
+        "index, ring, periphery, core: pattern metrics (pattern_metrics.hpp) of the bed, Phi > " +
+        format_number(level_) + "; surface angle: fit of the Phi = " + format_number(level_) +
+        " contour within 0.8 R of the axis (a polygon: inside it scaled by 0.8; drum frame); flowing = |u_rel| > " +
+        format_number(v_flow_) +
+        " m/s; layer_thickness: area of the flowing bed over the surface's chord (m); axis: small-particle "
+        "share within " +
+        format_number(kAxisShare) +
+        " D of the axis; packing_contrast: Fig. 7d "
+        "(packing_contrast.hpp); *_layer: the drum's own regions (layer_regions.hpp), r_core_layer = d - the "
+        "layer's thickness (its mean over t >= angle_from once there, else the present one), cells weighted by "
+        "their exact area inside each region; tracer_core_layer: the passive tracer's share tau/Phi of the core "
+        "(NaN without a tracer); points_core_layer: of the material points (four per bed cell at t = 0, carried "
+        "through the velocity relative to the drum, material_points.hpp) within the core, the share that "
+        "started where the tracer's share is >= 1/2 (NaN without a tracer)");
 }
 
-bool CoupledRecord::due(double next) const {
-    return flow_.time() >= next - 1e-12 || flow_.time() >= options_.run.t_end;
-}
+bool CoupledRecord::due(double next) const { return flow_.time() >= next - 1e-12 || flow_.time() >= options_.run.t_end; }
 
 void CoupledRecord::sample() {
     const bool vtk = options_.run.vtk && due(next_snapshot_);
@@ -178,16 +180,31 @@ void CoupledRecord::record_history() {
     layer_.add(flow_.time(), thickness);
     measure_pattern(thickness);
     const CoupledMeasures& m = last_;
-    history_.row({{"t", flow_.time()}, {"steps", static_cast<double>(flow_.steps())}, {"mass_small", amount[0]},
-                  {"mass_large", amount[1]}, {"segregation_index", m.metrics.index}, {"surface_angle_deg", m.surface_angle},
-                  {"ring", m.metrics.ring}, {"periphery", m.metrics.periphery}, {"core", m.metrics.core},
-                  {"mass_small_change", m.small_change}, {"mass_large_change", m.large_change},
-                  {"flowing_fraction", d.flowing_fraction}, {"max_speed", d.max_speed},
-                  {"substeps", static_cast<double>(tumbler_.segregation_substeps())}, {"dt", flow_.last_dt()},
-                  {"layer_thickness", thickness}, {"axis", m.axis}, {"packing_contrast", m.contrast.contrast},
-                  {"r_core_layer", m.own.r_core}, {"core_layer", m.own.core}, {"ring_layer", m.own.ring},
-                  {"periphery_layer", m.own.periphery}, {"axis_layer", m.own.axis},
-                  {"tracer_core_layer", m.tracer_core}, {"points_core_layer", m.points_core}});
+    history_.row({{"t", flow_.time()},
+                  {"steps", static_cast<double>(flow_.steps())},
+                  {"mass_small", amount[0]},
+                  {"mass_large", amount[1]},
+                  {"segregation_index", m.metrics.index},
+                  {"surface_angle_deg", m.surface_angle},
+                  {"ring", m.metrics.ring},
+                  {"periphery", m.metrics.periphery},
+                  {"core", m.metrics.core},
+                  {"mass_small_change", m.small_change},
+                  {"mass_large_change", m.large_change},
+                  {"flowing_fraction", d.flowing_fraction},
+                  {"max_speed", d.max_speed},
+                  {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
+                  {"dt", flow_.last_dt()},
+                  {"layer_thickness", thickness},
+                  {"axis", m.axis},
+                  {"packing_contrast", m.contrast.contrast},
+                  {"r_core_layer", m.own.r_core},
+                  {"core_layer", m.own.core},
+                  {"ring_layer", m.own.ring},
+                  {"periphery_layer", m.own.periphery},
+                  {"axis_layer", m.own.axis},
+                  {"tracer_core_layer", m.tracer_core},
+                  {"points_core_layer", m.points_core}});
 }
 
 std::array<double, 2> CoupledRecord::check_amounts() {
@@ -217,35 +234,56 @@ void CoupledRecord::measure_pattern(double thickness) {
 
 DataTable CoupledRecord::summary(const RunTime& cost) const {
     const CoupledMeasures& m = last_;
-    TableRow row{{"t_end", flow_.time()}, {"steps", static_cast<double>(flow_.steps())},
+    TableRow row{{"t_end", flow_.time()},
+                 {"steps", static_cast<double>(flow_.steps())},
                  {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
-                 {"segregation_steps", static_cast<double>(tumbler_.segregation_steps())}, {"angle_mean_deg", angle_.mean()},
-                 {"angle_std_deg", angle_.std_dev()}, {"angle_samples", static_cast<double>(angle_.samples())},
-                 {"mass_small_change", m.small_change}, {"mass_large_change", m.large_change},
-                 {"segregation_index", m.metrics.index}, {"ring", m.metrics.ring}, {"periphery", m.metrics.periphery},
-                 {"core", m.metrics.core}, {"initial_mixture", tumbler_.initial_mixture()},
+                 {"segregation_steps", static_cast<double>(tumbler_.segregation_steps())},
+                 {"angle_mean_deg", angle_.mean()},
+                 {"angle_std_deg", angle_.std_dev()},
+                 {"angle_samples", static_cast<double>(angle_.samples())},
+                 {"mass_small_change", m.small_change},
+                 {"mass_large_change", m.large_change},
+                 {"segregation_index", m.metrics.index},
+                 {"ring", m.metrics.ring},
+                 {"periphery", m.metrics.periphery},
+                 {"core", m.metrics.core},
+                 {"initial_mixture", tumbler_.initial_mixture()},
                  {"packing_feedback", tumbler_.setup().packing_feedback ? 1.0 : 0.0},
-                 {"packing_contrast", m.contrast.contrast}, {"packing_spread", m.contrast.spread},
-                 {"contrast_bins", static_cast<double>(m.contrast.bins)}, {"largest_bulk_clip", tumbler_.largest_bulk_clip()},
-                 {"largest_segregation_clip", tumbler_.largest_correction()}, {"seconds_flow", tumbler_.timers().flow},
-                 {"seconds_bulk", tumbler_.timers().bulk}, {"seconds_segregation", tumbler_.timers().segregation},
+                 {"packing_contrast", m.contrast.contrast},
+                 {"packing_spread", m.contrast.spread},
+                 {"contrast_bins", static_cast<double>(m.contrast.bins)},
+                 {"largest_bulk_clip", tumbler_.largest_bulk_clip()},
+                 {"largest_segregation_clip", tumbler_.largest_correction()},
+                 {"seconds_flow", tumbler_.timers().flow},
+                 {"seconds_bulk", tumbler_.timers().bulk},
+                 {"seconds_segregation", tumbler_.timers().segregation},
                  {"seconds_feedback", tumbler_.timers().feedback},
                  {"inside_cells", static_cast<double>(tumbler_.grid().inside_cells())}};
     append_flow_work(flow_, row);
-    row.add({{"layer_mean", layer_.mean()}, {"layer_std", layer_.std_dev()}, {"axis", m.axis}, {"r_core_layer", m.own.r_core},
-             {"core_layer", m.own.core}, {"ring_layer", m.own.ring}, {"periphery_layer", m.own.periphery},
-             {"axis_layer", m.own.axis}, {"tracer_core_layer", m.tracer_core}, {"points_core_layer", m.points_core}});
+    row.add({{"layer_mean", layer_.mean()},
+             {"layer_std", layer_.std_dev()},
+             {"axis", m.axis},
+             {"r_core_layer", m.own.r_core},
+             {"core_layer", m.own.core},
+             {"ring_layer", m.own.ring},
+             {"periphery_layer", m.own.periphery},
+             {"axis_layer", m.own.axis},
+             {"tracer_core_layer", m.tracer_core},
+             {"points_core_layer", m.points_core}});
     append_run_time(cost, row);
     const PatternRegions& r = options_.regions;
     DataTable summary;
-    summary.comment("angle: mean over t >= " + format_number(options_.run.angle_from) +
-                    " s; pattern metrics at t_end (regions r_core " + format_number(r.r_core) + ", r_ring " +
-                    format_number(r.r_ring) + ", r_periphery " + format_number(r.r_periphery) +
-                    " m); layer: mean and standard deviation of the flowing layer's thickness (m) over the angle's "
-                    "samples; axis: small-particle share within " + format_number(kAxisShare) +
-                    " D of the axis at t_end; *_layer: as history.dat at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " + format_number(contrast_options_.bin) +
-                    " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
-                    "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work; wall_seconds, cpu_seconds (all threads), threads: the run's cost");
+    summary.comment(
+        "angle: mean over t >= " + format_number(options_.run.angle_from) + " s; pattern metrics at t_end (regions r_core " +
+        format_number(r.r_core) + ", r_ring " + format_number(r.r_ring) + ", r_periphery " + format_number(r.r_periphery) +
+        " m); layer: mean and standard deviation of the flowing layer's thickness (m) over the angle's "
+        "samples; axis: small-particle share within " +
+        format_number(kAxisShare) +
+        " D of the axis at t_end; *_layer: as history.dat at t_end; packing contrast (Fig. 7d): packing_contrast.hpp, bins of " +
+        format_number(contrast_options_.bin) +
+        " m; clips: largest round-off corrections of phi; seconds: wall time of the step's parts (flow, bulk "
+        "transport, segregation sub-steps, closures from phi_hat); flow work: flow_output.hpp append_flow_work; wall_seconds, "
+        "cpu_seconds (all threads), threads: the run's cost");
     summary.row(row);
     return summary;
 }

@@ -53,7 +53,7 @@ using CoupledStepObserver = std::function<void(const CoupledTumbler& tumbler)>;
 /// vtk/tumbler_NNNN.vtk.
 /// With `checkpoints`, the run writes and resumes checkpoints of the tumbler and of what it has
 /// recorded (core/run_checkpoints.hpp).
-OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options,
-                              const CoupledStepObserver& observer = {}, RunCheckpoints* checkpoints = nullptr);
+OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options, const CoupledStepObserver& observer = {},
+                              RunCheckpoints* checkpoints = nullptr);
 
 }  // namespace granseg

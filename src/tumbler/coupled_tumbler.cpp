@@ -71,8 +71,9 @@ CoupledTumbler::CoupledTumbler(const CoupledTumblerSetup& setup)
         throw InputError("tumbler: the segregation scheme must keep 0 <= phi <= Phi (modified-godunov, -2)");
     const Grid& g = flow_.grid();
     const std::vector<double> Phi0 =
-        setup.packing_feedback ? drum_bed_at_rest(setup.drum, g, setup.material, initial_.phi_hat, initial_.mean, setup.flow.T_floor)
-                               : drum_bed_at_rest(setup.drum, g, setup.material, initial_.mean, setup.flow.T_floor);
+        setup.packing_feedback
+            ? drum_bed_at_rest(setup.drum, g, setup.material, initial_.phi_hat, initial_.mean, setup.flow.T_floor)
+            : drum_bed_at_rest(setup.drum, g, setup.material, initial_.mean, setup.flow.T_floor);
     phi_.assign(g.cells(), 0.0);
     for (std::size_t c = 0; c < g.cells(); ++c) phi_[c] = initial_.phi_hat[c] * Phi0[c];
     if (setup.tracer0) {
@@ -107,8 +108,9 @@ void CoupledTumbler::start_from(StateIO& flow_state) {
         const auto lab = flow_.frame().to_lab_position(t, g.center(0, c % g.n[0]), g.center(2, c / (g.n[0] * g.n[1])));
         const double v = f(lab[0], lab[1]);
         if (!(v >= 0.0 && v <= 1.0))
-            throw InputError(std::string("tumbler: initial ") + name + " = " + format_number(v) + " at x = " + format_number(lab[0]) +
-                             ", z = " + format_number(lab[1]) + " (lab frame, t = " + format_number(t) + " s) outside [0, 1]");
+            throw InputError(std::string("tumbler: initial ") + name + " = " + format_number(v) +
+                             " at x = " + format_number(lab[0]) + ", z = " + format_number(lab[1]) +
+                             " (lab frame, t = " + format_number(t) + " s) outside [0, 1]");
         return v * flow_.Phi()[c];
     };
     for (std::size_t c = 0; c < g.cells(); ++c) {
@@ -151,8 +153,10 @@ double CoupledTumbler::step(double t_end) {
 
 void CoupledTumbler::transport(std::vector<double>& field, double dt) {
     const FaceFieldRefs M = {&flow_.mass_flux(0), &flow_.mass_flux(1), &flow_.mass_flux(2)};
-    if (fct_) fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, field, setup_.Phi_min);
-    else bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, field, setup_.Phi_min);
+    if (fct_)
+        fct_->step(flow_.Phi_before(), flow_.Phi(), M, no_inflow_, dt, field, setup_.Phi_min);
+    else
+        bulk_.step(flow_.Phi_before(), M, no_inflow_, dt, field, setup_.Phi_min);
 }
 
 void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char* name) {
@@ -174,18 +178,20 @@ void CoupledTumbler::clip_bulk_round_off(std::vector<double>& field, const char*
         const double correction = std::max(phi[c] - Phi[c], -phi[c]);
         if (correction > 0.0) b.worst = std::max(b.worst, correction / (kBoundRoundOff * std::max(before[c], Phi[c])));
     };
-    const auto [excess, lowest, worst, nonfinite] = parallel_fold(parallel_, cells, Bounds{}, cell, [](const Bounds& x, const Bounds& y) {
-        return Bounds{std::max(x.excess, y.excess), std::min(x.lowest, y.lowest), std::max(x.worst, y.worst), x.nonfinite + y.nonfinite};
-    });
+    const auto [excess, lowest, worst, nonfinite] =
+        parallel_fold(parallel_, cells, Bounds{}, cell, [](const Bounds& x, const Bounds& y) {
+            return Bounds{std::max(x.excess, y.excess), std::min(x.lowest, y.lowest), std::max(x.worst, y.worst),
+                          x.nonfinite + y.nonfinite};
+        });
     max_excess_ = std::max(max_excess_, excess), min_phi_ = std::min(min_phi_, lowest);
     if (nonfinite > 0)
-        throw InvariantError(std::string("tumbler: non-finite ") + name + " after the bulk step at t = " + format_number(time()) + " (" +
-                             std::to_string(nonfinite) + " cells)");
+        throw InvariantError(std::string("tumbler: non-finite ") + name + " after the bulk step at t = " + format_number(time()) +
+                             " (" + std::to_string(nonfinite) + " cells)");
     if (!(excess > 0.0 || lowest < 0.0)) return;
     if (worst > 1.0)
-        throw InvariantError(std::string("tumbler: the bulk step left 0 <= ") + name + " <= Phi by more than round-off (max excess " +
-                             format_number(excess, 3) + ", min " + format_number(lowest, 3) + ") at t = " +
-                             format_number(time()) + " s");
+        throw InvariantError(std::string("tumbler: the bulk step left 0 <= ") + name +
+                             " <= Phi by more than round-off (max excess " + format_number(excess, 3) + ", min " +
+                             format_number(lowest, 3) + ") at t = " + format_number(time()) + " s");
     for (std::size_t c = 0; c < cells; ++c) {
         if (!in[c]) continue;
         largest_bulk_clip_ = std::max(largest_bulk_clip_, std::max(phi[c] - Phi[c], -phi[c]));
@@ -202,7 +208,7 @@ SegregationDirection CoupledTumbler::direction(std::size_t c) const {
     for (int b = 0; b < 3; ++b)
         for (int k = 0; k < 3; ++k) G(b, k) = f.velocity_gradient(b, k)[c];
     const Eigen::Vector3d u(f.u(0)[c], f.u(1)[c], f.u(2)[c]);  // relative to the drum
-    return segregation_direction(G, u, options);                // (Sect. 2.3)
+    return segregation_direction(G, u, options);               // (Sect. 2.3)
 }
 
 void CoupledTumbler::update_segregation_velocity() {

@@ -68,7 +68,7 @@ struct CoupledTumblerSetup {
     /// kappa_max - kappa_min (1/s) is at or below this, as if no shear plane existed there (it
     /// raises D1's threshold); 0: off. Switches the segregation off in the slowly creeping bed.
     double diagnostic_min_shear_rate = 0.0;
-    bool packing_feedback = true;    // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
+    bool packing_feedback = true;  // Phi_rcp, Phi_co follow phi_hat (true) or the initial mixture (C3)
     /// Without packing feedback: the phi_hat whose Phi_rcp, Phi_co the closures keep; NaN: the
     /// initial bed's mean (C3). Lets a tracer (S = 0) ride on the flow of another mixture.
     double mixture = std::numeric_limits<double>::quiet_NaN();
@@ -156,9 +156,9 @@ private:
     CoupledTumblerSetup setup_;
     InitialMixture initial_;  // before flow_, which is built with its mean
     FlowSolver flow_;
-    BulkTransport bulk_;                     // transport = donor-cell
-    std::optional<FctBulkTransport> fct_;    // transport = muscl
-    FaceFields no_inflow_;  // closed drum: nothing enters through a domain boundary
+    BulkTransport bulk_;                   // transport = donor-cell
+    std::optional<FctBulkTransport> fct_;  // transport = muscl
+    FaceFields no_inflow_;                 // closed drum: nothing enters through a domain boundary
     SegregationSolver segregation_;
     std::vector<unsigned char> inside_;  // 1 for inside cells
     bool parallel_;                      // OpenMP threads on the per-cell loops of larger grids

@@ -17,7 +17,8 @@ Frame DrumSpec::frame() const {
 }
 
 DrumShape DrumSpec::cross_section() const {
-    return shape == DrumShapeKind::circle ? DrumShape::circle(radius()) : DrumShape::polygon(sides, radius(), orientation * M_PI / 180.0);
+    return shape == DrumShapeKind::circle ? DrumShape::circle(radius())
+                                          : DrumShape::polygon(sides, radius(), orientation * M_PI / 180.0);
 }
 
 Grid DrumSpec::grid() const { return drum_grid(cross_section(), cells_per_diameter, axial_cells, axial_length); }
@@ -31,8 +32,7 @@ double closest_surface_distance(const DrumSpec& drum) {
     return closest;
 }
 
-std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat,
-                                     double T) {
+std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat, double T) {
     return lithostatic_bed(grid, material, drum.surface_height(), drum.gravity, T, material.packing.Phi_rcp(phi_hat),
                            material.packing.Phi_co(phi_hat));
 }

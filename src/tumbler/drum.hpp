@@ -23,9 +23,9 @@ namespace granseg {
 
 /// Geometry and rotation of the drum (keys of the [drum] section, docs/scenes.md).
 struct DrumSpec {
-    double diameter = 0.1;        // m, of the circle (a polygon: of the circle through its corners)
+    double diameter = 0.1;  // m, of the circle (a polygon: of the circle through its corners)
     int cells_per_diameter = 100;
-    double fill_height = 0.075;   // m, flat initial surface above the drum's lowest point
+    double fill_height = 0.075;  // m, flat initial surface above the drum's lowest point
     DrumShapeKind shape = DrumShapeKind::circle;
     int sides = 4;                // a polygon's sides (>= 3)
     double orientation = 0.0;     // degrees a polygon is turned counter-clockwise from a side at the bottom
@@ -72,8 +72,7 @@ constexpr double kDrumHistoryInterval = 0.05;
 /// Phi per cell of the bed at rest before the drum turns: the lithostatic balance under |g| along
 /// -z with the flat surface at the fill height, T = T, for the uniform mixture phi_hat
 /// (Phi_rcp(phi_hat), Phi_co(phi_hat); flow_run/bed.hpp lithostatic_bed).
-std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat,
-                                     double T);
+std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat, double T);
 
 /// The bed at rest of a mixture that varies from cell to cell, for packing feedback: the bed of
 /// the uniform `mixture` (above) where phi_hat = mixture, and elsewhere, at the same pressure, the

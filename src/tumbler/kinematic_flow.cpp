@@ -110,9 +110,7 @@ RollingDrumFlow::StreamDerivatives RollingDrumFlow::derivatives(double x, double
     return r;
 }
 
-double RollingDrumFlow::stream_function(double x, double z) const {
-    return in_bed(x, z) ? derivatives(x, z).psi : 0.0;
-}
+double RollingDrumFlow::stream_function(double x, double z) const { return in_bed(x, z) ? derivatives(x, z).psi : 0.0; }
 
 Eigen::Vector3d RollingDrumFlow::velocity(double x, double z) const {
     if (!in_bed(x, z)) return Eigen::Vector3d::Zero();
@@ -125,7 +123,7 @@ Eigen::Matrix3d RollingDrumFlow::velocity_gradient(double x, double z) const {
 }
 
 Eigen::Vector3d RollingDrumFlow::relative_velocity(double x, double z) const {
-    if (!in_layer(x, z)) return Eigen::Vector3d::Zero();  // the core turns with the drum
+    if (!in_layer(x, z)) return Eigen::Vector3d::Zero();           // the core turns with the drum
     return velocity(x, z) - Omega_ * Eigen::Vector3d(-z, 0.0, x);  // u - Omega x x
 }
 

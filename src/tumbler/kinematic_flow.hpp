@@ -60,9 +60,9 @@ public:
 
     const RollingDrumParameters& parameters() const { return p_; }
     double radius() const { return R_; }
-    double Omega() const { return Omega_; }              // signed angular velocity, rad/s
-    double surface_distance() const { return d_; }       // d: distance of the surface from the centre, m
-    double half_chord() const { return L_; }             // L: half length of the free surface, m
+    double Omega() const { return Omega_; }                // signed angular velocity, rad/s
+    double surface_distance() const { return d_; }         // d: distance of the surface from the centre, m
+    double half_chord() const { return L_; }               // L: half length of the free surface, m
     const Eigen::Vector3d& tangent() const { return t_; }  // downslope unit tangent of the surface
     const Eigen::Vector3d& normal() const { return n_; }   // unit normal of the surface, out of the bed
 
@@ -80,11 +80,11 @@ public:
     bool in_layer(double x, double z) const;  // in the bed and -delta(s) < n
 
     // The model at a point (x, z) of the bed; every function returns 0 outside the bed (no material).
-    double stream_function(double x, double z) const;                       // psi, m^2/s
-    Eigen::Vector3d velocity(double x, double z) const;                     // inertial u (u_y = 0)
-    Eigen::Matrix3d velocity_gradient(double x, double z) const;            // grad u, (i, j) = du_i/dx_j
-    Eigen::Vector3d relative_velocity(double x, double z) const;            // u - Omega x x
-    Eigen::Matrix3d relative_velocity_gradient(double x, double z) const;   // grad u - grad(Omega x x)
+    double stream_function(double x, double z) const;                      // psi, m^2/s
+    Eigen::Vector3d velocity(double x, double z) const;                    // inertial u (u_y = 0)
+    Eigen::Matrix3d velocity_gradient(double x, double z) const;           // grad u, (i, j) = du_i/dx_j
+    Eigen::Vector3d relative_velocity(double x, double z) const;           // u - Omega x x
+    Eigen::Matrix3d relative_velocity_gradient(double x, double z) const;  // grad u - grad(Omega x x)
 
 private:
     struct StreamDerivatives;  // psi, its gradient and Hessian at a point (kinematic_flow.cpp)
@@ -97,13 +97,13 @@ private:
 
 /// The kinematic flow on the Cartesian drum grid, ready for transport and for the direction.
 struct RollingDrumFields {
-    Grid grid;                               // x-z plane, ny = 1, covering [-R, R]^2; inside = bed cells
-    std::vector<unsigned char> in_drum;      // 1 where the cell centre is in the drum (bed or air)
-    std::vector<unsigned char> in_layer;     // 1 where the cell centre is in the flowing layer
-    std::array<std::vector<double>, 3> M;    // face mass fluxes Phi u.n, grid.face_index layout; M[1] empty
-    std::array<std::vector<double>, 3> u;    // inertial velocity at cell centres (0 outside the bed)
-    std::array<std::vector<double>, 3> u_rel;      // relative (drum-frame) velocity at cell centres
-    std::array<std::vector<double>, 9> grad_rel;   // d u_rel_i / d x_j at cell centres, index 3 i + j
+    Grid grid;                                    // x-z plane, ny = 1, covering [-R, R]^2; inside = bed cells
+    std::vector<unsigned char> in_drum;           // 1 where the cell centre is in the drum (bed or air)
+    std::vector<unsigned char> in_layer;          // 1 where the cell centre is in the flowing layer
+    std::array<std::vector<double>, 3> M;         // face mass fluxes Phi u.n, grid.face_index layout; M[1] empty
+    std::array<std::vector<double>, 3> u;         // inertial velocity at cell centres (0 outside the bed)
+    std::array<std::vector<double>, 3> u_rel;     // relative (drum-frame) velocity at cell centres
+    std::array<std::vector<double>, 9> grad_rel;  // d u_rel_i / d x_j at cell centres, index 3 i + j
 };
 
 /// Samples `flow` on cells_per_diameter^2 cells with constant granular volume fraction Phi.

@@ -18,18 +18,19 @@ namespace {
 RollingDrumFields checked_fields(const RollingDrumFlow& flow, const KinematicTumblerSetup& setup) {
     if (!(setup.Phi > 0.0 && setup.Phi < 1.0))
         throw InputError("kinematic tumbler: Phi = " + format_number(setup.Phi) + " outside (0, 1)");
-    if (!(setup.S >= 0.0 && std::isfinite(setup.S)))
-        throw InputError("kinematic tumbler: S must be finite and >= 0");
-    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0))
-        throw InputError("kinematic tumbler: bulk CFL number outside (0, 1]");
+    if (!(setup.S >= 0.0 && std::isfinite(setup.S))) throw InputError("kinematic tumbler: S must be finite and >= 0");
+    if (!(setup.bulk_cfl > 0.0 && setup.bulk_cfl <= 1.0)) throw InputError("kinematic tumbler: bulk CFL number outside (0, 1]");
     return discretize(flow, setup.cells_per_diameter, setup.Phi);
 }
 
 }  // namespace
 
 KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
-    : flow_(setup.drum), fields_(checked_fields(flow_, setup)), solver_(fields_.grid, setup.segregation),
-      bulk_(setup.bulk), fct_(fields_.grid) {
+    : flow_(setup.drum),
+      fields_(checked_fields(flow_, setup)),
+      solver_(fields_.grid, setup.segregation),
+      bulk_(setup.bulk),
+      fct_(fields_.grid) {
     const Grid& g = fields_.grid;
     const std::size_t cells = g.cells();
     frozen_.Phi.assign(cells, 0.0);
@@ -47,14 +48,14 @@ KinematicTumbler::KinematicTumbler(const KinematicTumblerSetup& setup)
         ++bed_cells_;
         const double phi_hat = setup.phi_hat0(b.x, b.z);
         if (!(phi_hat >= 0.0 && phi_hat <= 1.0))
-            throw InputError("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " +
-                                        format_number(b.x) + ", z = " + format_number(b.z) + " outside [0, 1]");
+            throw InputError("kinematic tumbler: initial phi_hat = " + format_number(phi_hat) + " at x = " + format_number(b.x) +
+                             ", z = " + format_number(b.z) + " outside [0, 1]");
         frozen_.Phi[c] = setup.Phi;
         phi_[c] = phi_hat * setup.Phi;
         const Eigen::Matrix3d grad_rel = cell_tensor(fields_.grad_rel, c);
         const SegregationDirection dir = segregation_direction(grad_rel, cell_vector(fields_.u_rel, c), planar);
         const Eigen::Vector3d d_s = dir.d_s.dot(flow_.normal()) < 0.0 ? Eigen::Vector3d(-dir.d_s) : dir.d_s;
-        T_[c] = steady_shear_temperature(setup.material, shear_rate(grad_rel));  // (eq. 45)
+        T_[c] = steady_shear_temperature(setup.material, shear_rate(grad_rel));        // (eq. 45)
         const Eigen::Vector3d a = segregation_velocity(setup.S, T_[c], d_s, gravity);  // (eq. 46)
         frozen_.a[0][c] = a(0), frozen_.a[2][c] = a(2);
         ds_x_[c] = d_s(0), ds_z_[c] = d_s(2);

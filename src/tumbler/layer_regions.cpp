@@ -8,7 +8,9 @@
 namespace granseg {
 
 LayerRegions::LayerRegions(const Grid& grid, double d, double R, double axis_radius)
-    : grid_(grid), d_(d), periphery_(region_weights(grid, 0.8 * R, std::numeric_limits<double>::infinity())),
+    : grid_(grid),
+      d_(d),
+      periphery_(region_weights(grid, 0.8 * R, std::numeric_limits<double>::infinity())),
       axis_(disc_weights(grid, axis_radius)) {}
 
 LayerRegionShares LayerRegions::shares(const std::vector<double>& phi, const std::vector<double>& Phi, double layer,

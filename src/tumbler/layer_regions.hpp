@@ -25,7 +25,7 @@
 namespace granseg {
 
 struct LayerRegionShares {
-    double r_core = 0;                                  // m, d - delta
+    double r_core = 0;                                   // m, d - delta
     double core = 0, ring = 0, periphery = 0, axis = 0;  // small-particle share of each region
     void checkpoint(StateIO& io) { io("r_core", r_core)("core", core)("ring", ring)("periphery", periphery)("axis", axis); }
 };

@@ -19,8 +19,7 @@ struct Moments {
 
 }  // namespace
 
-PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_angle_deg,
-                                 const PackingContrastOptions& o) {
+PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_angle_deg, const PackingContrastOptions& o) {
     const FlowSolver& s = tumbler.flow();
     const Grid& g = s.grid();
     const std::vector<double> hat = tumbler.phi_hat();

@@ -22,23 +22,22 @@
 namespace granseg {
 
 struct PackingContrastOptions {
-    double bed_level = 0.3;       // a bed cell has Phi > bed_level
-    double v_flow = 0.0;          // m/s, at rest: speed relative to the drum <= v_flow
-    double bin = 0.005;           // m, width of a depth bin
+    double bed_level = 0.3;                             // a bed cell has Phi > bed_level
+    double v_flow = 0.0;                                // m/s, at rest: speed relative to the drum <= v_flow
+    double bin = 0.005;                                 // m, width of a depth bin
     double mixed_lo = 0.3, mixed_hi = 0.7, pure = 0.1;  // phi_hat classes (docs/assumptions.md)
 };
 
 struct PackingContrast {
-    double contrast = 0;  // weighted mean of the bins' (mean Phi mixed - mean Phi pure)
-    double spread = 0;    // pooled standard deviation of Phi within a kind and a bin
-    int bins = 0;         // bins with both kinds
+    double contrast = 0;       // weighted mean of the bins' (mean Phi mixed - mean Phi pure)
+    double spread = 0;         // pooled standard deviation of Phi within a kind and a bin
+    int bins = 0;              // bins with both kinds
     long mixed = 0, pure = 0;  // cells of each kind in those bins
     void checkpoint(StateIO& io) { io("contrast", contrast)("spread", spread)("bins", bins)("mixed", mixed)("pure", pure); }
 };
 
 /// The contrast of the tumbler's current state; surface_angle_deg: the fitted free-surface angle
 /// (flow_output.hpp drum_state) against the horizontal.
-PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_angle_deg,
-                                 const PackingContrastOptions& options);
+PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_angle_deg, const PackingContrastOptions& options);
 
 }  // namespace granseg

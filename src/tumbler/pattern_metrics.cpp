@@ -17,7 +17,10 @@ PatternMetrics pattern_metrics(const Grid& grid, const std::vector<double>& phi,
         const std::size_t c = b.c;
         if (!(Phi[c] > regions.bed_level)) return;
         const double r = std::hypot(b.x, b.z);  // distance from the drum centre
-        const int region = r < regions.r_core ? 0 : r < regions.r_ring ? 1 : regions.shape.gauge(b.x, b.z) >= regions.r_periphery ? 2 : -1;
+        const int region = r < regions.r_core                                     ? 0
+                           : r < regions.r_ring                                   ? 1
+                           : regions.shape.gauge(b.x, b.z) >= regions.r_periphery ? 2
+                                                                                  : -1;
         const double phi_hat = composition(phi[c], Phi[c]);
         if (region >= 0) small[region] += phi[c], all[region] += Phi[c];
         if (region == 0) m.core_deviation = std::max(m.core_deviation, std::fabs(phi_hat - phi_hat_initial[c]));
@@ -55,8 +58,8 @@ double disc_share(const Grid& grid, const std::vector<double>& phi, const std::v
     return all > 0.0 ? small / all : std::numeric_limits<double>::quiet_NaN();
 }
 
-ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
-                           double radius, int shells, double bed_level) {
+ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi, double radius,
+                           int shells, double bed_level) {
     if (shells < 1 || !(radius > 0.0)) throw InputError("shell profile: needs shells >= 1 and radius > 0");
     std::vector<double> r_sum(shells, 0.0), small(shells, 0.0), all(shells, 0.0);
     ShellProfile p;

@@ -23,8 +23,8 @@ namespace granseg {
 
 struct PatternRegions {
     double r_core = 0, r_ring = 0, r_periphery = 0;  // m
-    double bed_level = 0;                             // a bed cell has Phi > bed_level
-    DrumShape shape = DrumShape::circle(1.0);         // whose gauge places the periphery (a circle: r, any radius)
+    double bed_level = 0;                            // a bed cell has Phi > bed_level
+    DrumShape shape = DrumShape::circle(1.0);        // whose gauge places the periphery (a circle: r, any radius)
 };
 
 /// The regions of a drum of radius R whose free surface passes at distance d from the centre, on
@@ -59,7 +59,7 @@ struct ShellProfile {
     std::vector<double> r, phi_hat;
     std::vector<long> cells;
 };
-ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi,
-                           double radius, int shells, double bed_level = 0.0);
+ShellProfile shell_profile(const Grid& grid, const std::vector<double>& phi, const std::vector<double>& Phi, double radius,
+                           int shells, double bed_level = 0.0);
 
 }  // namespace granseg

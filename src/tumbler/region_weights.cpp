@@ -30,8 +30,7 @@ std::vector<double> disc_weights(const Grid& grid, double R) {
 }
 
 std::vector<double> region_weights(const Grid& grid, double r_inner, double r_outer) {
-    if (!(r_inner >= 0.0 && r_outer >= r_inner))
-        throw InputError("region weights: need 0 <= r_inner <= r_outer");
+    if (!(r_inner >= 0.0 && r_outer >= r_inner)) throw InputError("region weights: need 0 <= r_inner <= r_outer");
     std::vector<double> w = disc_weights(grid, r_outer);
     const std::vector<double> inner = disc_weights(grid, r_inner);
     for (std::size_t c = 0; c < w.size(); ++c) w[c] = std::max(0.0, w[c] - inner[c]);

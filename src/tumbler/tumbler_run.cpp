@@ -20,7 +20,8 @@ void check_bulk_bounds(const BoundsMonitor& b, double Phi_max, double t) {
     if (b.nonfinite > 0) throw InvariantError("tumbler-kinematic: non-finite phi after the bulk step at t = " + format_number(t));
     if (b.max_excess > allowance || b.min_phi < -allowance)
         throw InvariantError("tumbler-kinematic: the bulk step left 0 <= phi <= Phi at t = " + format_number(t) +
-                             " (max phi - Phi " + format_number(b.max_excess, 3) + ", min phi " + format_number(b.min_phi, 3) + ")");
+                             " (max phi - Phi " + format_number(b.max_excess, 3) + ", min phi " + format_number(b.min_phi, 3) +
+                             ")");
 }
 
 /// Folds the extremes of one step into those of the run.
@@ -34,12 +35,13 @@ void merge(BoundsMonitor& run, const BoundsMonitor& step) {
 /// recorded must be this run's (an extension to a later t_end keeps their spacing: t_end/samples
 /// and t_end/frames as in the run that wrote it). InputError otherwise.
 void check_continuation(const std::string& file, const TumblerRunResult& result, int next_sample,
-                        const std::function<double(int)>& sample_time, int next_frame, const std::function<double(int)>& frame_time) {
+                        const std::function<double(int)>& sample_time, int next_frame,
+                        const std::function<double(int)>& frame_time) {
     const auto check = [&](const char* key, double recorded, double here, double spacing) {
         if (recorded != here)
-            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " +
-                             format_number(recorded, 17) + " s, this scene's at t = " + format_number(here, 17) +
-                             " s (allowed: the checkpoint's spacing, " + format_number(spacing, 17) + " s, up to the new t_end)");
+            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " + format_number(recorded, 17) +
+                             " s, this scene's at t = " + format_number(here, 17) + " s (allowed: the checkpoint's spacing, " +
+                             format_number(spacing, 17) + " s, up to the new t_end)");
     };
     const auto& h = result.history;
     if (h.size() >= 2) check("samples", h.back().t, sample_time(next_sample - 1), h[1].t - h[0].t);
@@ -72,8 +74,10 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
     };
     const auto sample_time = [&](int n) { return n == options.samples ? options.t_end : t0 + span * n / options.samples; };
     const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
-    if (!saves.resume(options.t_end, state)) record(t0);
-    else check_continuation(saves.path(), result, next_sample, sample_time, next_frame, frame_time);
+    if (!saves.resume(options.t_end, state))
+        record(t0);
+    else
+        check_continuation(saves.path(), result, next_sample, sample_time, next_frame, frame_time);
     Progress progress("tumbler-kinematic", options.t_end, tumbler.time());
     BoundsMonitor step_bulk;
     std::vector<double> phi_after_bulk;  // kept only for an observer
@@ -100,8 +104,7 @@ TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerR
             result.after_segregation.observe(grid, tumbler.phi(), Phi);  // finite values; the clip keeps the bounds
             check_segregation_invariants("tumbler-kinematic", result.after_segregation, tumbler.largest_correction(),
                                          result.mass_start, total_amount(grid, tumbler.phi()), result.mass_start,
-                                         kTumblerMassTolerance,
-                                         true, Phi_max);
+                                         kTumblerMassTolerance, true, Phi_max);
             ++next_sample;
         }
         progress.update(tumbler.time());

@@ -29,9 +29,9 @@ namespace granseg {
 constexpr double kTumblerMassTolerance = 1e-12;
 
 struct TumblerRunOptions {
-    double t_end = 25.0;   // s
-    int samples = 100;     // metric records after t = 0 (every t_end/samples)
-    int frames = 0;        // snapshots of phi_hat after t = 0 (every t_end/frames); 0: none
+    double t_end = 25.0;  // s
+    int samples = 100;    // metric records after t = 0 (every t_end/samples)
+    int frames = 0;       // snapshots of phi_hat after t = 0 (every t_end/frames); 0: none
     PatternRegions regions;
 };
 
@@ -48,12 +48,12 @@ struct TumblerSnapshot {
 };
 
 struct TumblerRunResult {
-    std::vector<TumblerRecord> history;    // t = 0 and every sample time
-    std::vector<TumblerSnapshot> frames;   // every frame time (empty if frames = 0)
+    std::vector<TumblerRecord> history;   // t = 0 and every sample time
+    std::vector<TumblerSnapshot> frames;  // every frame time (empty if frames = 0)
     std::vector<double> phi_hat_initial;
-    double mass_start = 0, mass_end = 0;   // sum of phi h^2 over the bed
-    BoundsMonitor after_bulk;          // extremes of phi - Phi and phi after every bulk step
-    BoundsMonitor after_segregation;   // the same at the sample times (after the full step)
+    double mass_start = 0, mass_end = 0;  // sum of phi h^2 over the bed
+    BoundsMonitor after_bulk;             // extremes of phi - Phi and phi after every bulk step
+    BoundsMonitor after_segregation;      // the same at the sample times (after the full step)
     void checkpoint(StateIO& io) {
         io("history", history)("frames", frames)("phi_hat_initial", phi_hat_initial)("mass_start", mass_start);
         io("mass_end", mass_end)("after_bulk", after_bulk)("after_segregation", after_segregation);

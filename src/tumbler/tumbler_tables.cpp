@@ -12,8 +12,7 @@ DataTable drum_outline(const RollingDrumFlow& flow) {
     DataTable outline;
     outline.comment("index 0: drum wall; 1: free surface; 2: bottom of the flowing layer (inertial frame, m)");
     const double R = flow.radius(), L = flow.half_chord(), d = flow.surface_distance();
-    for (int i = 0; i <= 360; ++i) outline.row({{"x", R * std::cos(i * M_PI / 180)},
-                                                 {"z", R * std::sin(i * M_PI / 180)}});
+    for (int i = 0; i <= 360; ++i) outline.row({{"x", R * std::cos(i * M_PI / 180)}, {"z", R * std::sin(i * M_PI / 180)}});
     outline.blank(), outline.blank();
     for (const double s : {-L, L}) {
         const Eigen::Vector3d X = d * flow.normal() + s * flow.tangent();
@@ -44,26 +43,39 @@ DataTable tumbler_flow_cells(const KinematicTumbler& tumbler) {
     const Grid& g = tumbler.grid();
     const RollingDrumFields& f = tumbler.fields();
     DataTable cells;
-    cells.comment("bed cells: inertial velocity (m/s), d_s (out of the bed; 0 in the core), T (m^2/s^2, eq. 45), "
-                  "a_k = (S^sl)_k (m/s, eq. 46)");
+    cells.comment(
+        "bed cells: inertial velocity (m/s), d_s (out of the bed; 0 in the core), T (m^2/s^2, eq. 45), "
+        "a_k = (S^sl)_k (m/s, eq. 46)");
     for_each_bed_cell(g, [&](const BedCell& b) {
         const std::size_t c = b.c;
-        cells.row({{"x", b.x}, {"z", b.z}, {"in_layer", double(f.in_layer[c])}, {"ux", f.u[0][c]},
-                    {"uz", f.u[2][c]}, {"ds_x", tumbler.ds_x()[c]}, {"ds_z", tumbler.ds_z()[c]},
-                    {"T", tumbler.T()[c]}, {"a_x", tumbler.frozen().a[0][c]}, {"a_z", tumbler.frozen().a[2][c]}});
+        cells.row({{"x", b.x},
+                   {"z", b.z},
+                   {"in_layer", double(f.in_layer[c])},
+                   {"ux", f.u[0][c]},
+                   {"uz", f.u[2][c]},
+                   {"ds_x", tumbler.ds_x()[c]},
+                   {"ds_z", tumbler.ds_z()[c]},
+                   {"T", tumbler.T()[c]},
+                   {"a_x", tumbler.frozen().a[0][c]},
+                   {"a_z", tumbler.frozen().a[2][c]}});
     });
     return cells;
 }
 
 DataTable tumbler_metrics(const TumblerRunResult& result, const PatternRegions& regions) {
     DataTable table;
-    table.comment("segregation index = std(phi_hat over the bed)/sqrt(m (1 - m)); core, ring, periphery: sum(phi)/sum(Phi) for r < " +
-                  format_number(regions.r_core) + ", " + format_number(regions.r_core) + " <= r < " + format_number(regions.r_ring) +
-                  ", r >= " + format_number(regions.r_periphery) + " m; core_deviation = max |phi_hat - initial| in the core");
+    table.comment(
+        "segregation index = std(phi_hat over the bed)/sqrt(m (1 - m)); core, ring, periphery: sum(phi)/sum(Phi) for r < " +
+        format_number(regions.r_core) + ", " + format_number(regions.r_core) + " <= r < " + format_number(regions.r_ring) +
+        ", r >= " + format_number(regions.r_periphery) + " m; core_deviation = max |phi_hat - initial| in the core");
     for (const TumblerRecord& r : result.history)
-        table.row({{"t", r.t}, {"index", r.metrics.index}, {"core", r.metrics.core}, {"ring", r.metrics.ring},
-                    {"periphery", r.metrics.periphery}, {"mean", r.metrics.mean},
-                    {"core_deviation", r.metrics.core_deviation}});
+        table.row({{"t", r.t},
+                   {"index", r.metrics.index},
+                   {"core", r.metrics.core},
+                   {"ring", r.metrics.ring},
+                   {"periphery", r.metrics.periphery},
+                   {"mean", r.metrics.mean},
+                   {"core_deviation", r.metrics.core_deviation}});
     return table;
 }
 
@@ -77,8 +89,11 @@ DataTable tumbler_shells(const KinematicTumbler& tumbler, const TumblerRunResult
     table.comment("phi_hat averaged (mass-weighted) over the bed cells of " + std::to_string(shells) +
                   " equal radial shells; r: mean radius of the shell's cells, m; t = " + format_number(tumbler.time()) + " s");
     for (int s = 0; s < shells; ++s)
-        if (after.cells[s] > 0) table.row({{"r", after.r[s]}, {"phi_hat_initial", before.phi_hat[s]},
-                                            {"phi_hat_final", after.phi_hat[s]}, {"cells", double(after.cells[s])}});
+        if (after.cells[s] > 0)
+            table.row({{"r", after.r[s]},
+                       {"phi_hat_initial", before.phi_hat[s]},
+                       {"phi_hat_final", after.phi_hat[s]},
+                       {"cells", double(after.cells[s])}});
     return table;
 }
 

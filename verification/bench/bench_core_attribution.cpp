@@ -80,9 +80,11 @@ AttributionOptions parse(int argc, char** argv) {
     po::options_description d("bench_core_attribution: what changes the composition of the drum's core");
     d.add_options()("help", "this list")("data", po::value(&o.run.data_dir)->default_value(o.run.data_dir), "output directory")(
         "grids", po::value(&grids)->default_value(grids), "cells per diameter, increasing")(
-        "thresholds", po::value(&thresholds)->default_value(thresholds), "1/s, diagnostic_min_shear_rate of the runs (ii); the first is the reference")(
+        "thresholds", po::value(&thresholds)->default_value(thresholds),
+        "1/s, diagnostic_min_shear_rate of the runs (ii); the first is the reference")(
         "dt-max", po::value(&o.dt_max)->default_value(o.dt_max), "s, [flow] dt_max of every run")(
-        "dt-check", po::value(&o.dt_check)->default_value(o.dt_check), "dt_max factor of (i), (ii), (iii) repeated at the first grid (0: none)");
+        "dt-check", po::value(&o.dt_check)->default_value(o.dt_check),
+        "dt_max factor of (i), (ii), (iii) repeated at the first grid (0: none)");
     add_run_options(d, o.run);
     parse_study_command_line(kProgram, argc, argv, d, o.run);
     o.grids = cell_list(kProgram, "grids", grids);
@@ -120,7 +122,8 @@ std::vector<PlannedRun> plan(const AttributionOptions& o) {
     for (std::size_t t = 1; t < o.thresholds.size(); ++t)
         for (int n : o.grids) add(Part::creep_off, o.thresholds[t], n);
     if (o.dt_check > 0.0)
-        for (Part p : {Part::full, Part::creep_off, Part::no_segregation}) add(p, o.thresholds.front(), o.grids.front(), o.dt_check);
+        for (Part p : {Part::full, Part::creep_off, Part::no_segregation})
+            add(p, o.thresholds.front(), o.grids.front(), o.dt_check);
     return runs;
 }
 
@@ -146,30 +149,45 @@ void append_profile(DataTable& table, const AttributionOptions& o, int cells) {
     };
     std::map<long, Sum> line;  // by height in units of h/2
     for (const std::vector<double>& row : fields.rows) {
-        if (fields.at(row, "inside") == 0 || !(fields.at(row, "Phi") >= Phi_min) || std::fabs(fields.at(row, "x")) > 0.5 * h * (1 + 1e-6)) continue;
+        if (fields.at(row, "inside") == 0 || !(fields.at(row, "Phi") >= Phi_min) ||
+            std::fabs(fields.at(row, "x")) > 0.5 * h * (1 + 1e-6))
+            continue;
         Sum& s = line[std::lround(2 * fields.at(row, "z") / h)];
         s.n += 1, s.T += fields.at(row, "T"), s.shear += fields.at(row, "shear_rate"), s.hat += fields.at(row, "phi_hat");
     }
     const double r_core = summary.at(summary.last(), "r_core_layer");
     for (const auto& [key, s] : line)
-        table.row({{"cells", static_cast<double>(cells)}, {"z", 0.5 * h * key}, {"T", s.T / s.n}, {"shear_rate", s.shear / s.n},
-                   {"phi_hat", s.hat / s.n}, {"r_core_layer", r_core}});
+        table.row({{"cells", static_cast<double>(cells)},
+                   {"z", 0.5 * h * key},
+                   {"T", s.T / s.n},
+                   {"shear_rate", s.shear / s.n},
+                   {"phi_hat", s.hat / s.n},
+                   {"r_core_layer", r_core}});
     table.blank(), table.blank();
 }
 
 void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Result>& results, const AttributionOptions& o) {
     DataTable dat;
-    dat.comment("bench_core_attribution: one row per run; part 0 full model, 1 no segregation at shear rates <= min_shear_rate (1/s), "
-                "2 S = 0; core, axis: small-particle shares at t_end with their jitter over the last " +
-                fig7_number(o.run.jitter_window) + " s (_se)");
+    dat.comment(
+        "bench_core_attribution: one row per run; part 0 full model, 1 no segregation at shear rates <= min_shear_rate (1/s), "
+        "2 S = 0; core, axis: small-particle shares at t_end with their jitter over the last " +
+        fig7_number(o.run.jitter_window) + " s (_se)");
     using Key = std::pair<int, double>;  // cells, dt_max
     std::map<Key, const Fig7Result*> full, none;
     for (std::size_t j = 0; j < runs.size(); ++j) {
         const Fig7Result& r = results[j];
-        dat.row({{"part", static_cast<double>(runs[j].part)}, {"cells", static_cast<double>(r.run.cells)}, {"dt_max", r.run.dt_max},
-                 {"min_shear_rate", r.run.min_shear_rate}, {"core", r.value[kCore]}, {"core_se", r.sampling[kCore]},
-                 {"axis", r.value[kAxis]}, {"axis_se", r.sampling[kAxis]}, {"layer_mm", r.value[kLayer]},
-                 {"angle", r.value[kAngle]}, {"initial_mixture", r.initial_mixture}, {"wall_seconds", r.wall}});
+        dat.row({{"part", static_cast<double>(runs[j].part)},
+                 {"cells", static_cast<double>(r.run.cells)},
+                 {"dt_max", r.run.dt_max},
+                 {"min_shear_rate", r.run.min_shear_rate},
+                 {"core", r.value[kCore]},
+                 {"core_se", r.sampling[kCore]},
+                 {"axis", r.value[kAxis]},
+                 {"axis_se", r.sampling[kAxis]},
+                 {"layer_mm", r.value[kLayer]},
+                 {"angle", r.value[kAngle]},
+                 {"initial_mixture", r.initial_mixture},
+                 {"wall_seconds", r.wall}});
         if (runs[j].part == Part::full) full[{r.run.cells, r.run.dt_max}] = &r;
         if (runs[j].part == Part::no_segregation) none[{r.run.cells, r.run.dt_max}] = &r;
     }
@@ -179,7 +197,7 @@ void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Re
     // grids, the change between successive grids, and the change the shorter step makes.
     struct Parts {
         Share i, ii, iii;
-        Share below() const { return i - ii; }   // segregation at or below the threshold
+        Share below() const { return i - ii; }    // segregation at or below the threshold
         Share above() const { return ii - iii; }  // segregation above it, and what carries its product in
     };
     std::map<std::tuple<double, double, int>, Parts> rows;  // (threshold, -dt_max, cells)
@@ -187,10 +205,12 @@ void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Re
         if (runs[j].part != Part::creep_off) continue;
         const Fig7Run& run = results[j].run;
         const Key key{run.cells, run.dt_max};
-        rows[{run.min_shear_rate, -run.dt_max, run.cells}] = {core_of(*full.at(key)), core_of(results[j]), core_of(*none.at(key))};
+        rows[{run.min_shear_rate, -run.dt_max, run.cells}] = {core_of(*full.at(key)), core_of(results[j]),
+                                                              core_of(*none.at(key))};
     }
     std::ostringstream md;
-    md << "| cells | dt_max (ms) | threshold (1/s) | (i) full model | (ii) no segregation at or below the threshold | (iii) S = 0 "
+    md << "| cells | dt_max (ms) | threshold (1/s) | (i) full model | (ii) no segregation at or below the threshold | (iii) S = "
+          "0 "
           "| segregation at or below the threshold: (i) − (ii) | segregation above it and transport: (ii) − (iii) |\n"
           "|---|---|---|---|---|---|---|---|\n";
     const auto change = [&](const std::string& what, double threshold, const Parts& a, const Parts& b) {
@@ -201,24 +221,29 @@ void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Re
     for (auto it = rows.begin(); it != rows.end(); ++it) {
         const auto& [threshold, minus_dt, cells] = it->first;
         const Parts& p = it->second;
-        md << "| " << cells << " | " << fig7_number(-1e3 * minus_dt) << " | " << fig7_number(threshold) << " | " << p.i.cell() << " | "
-           << p.ii.cell() << " | " << p.iii.cell() << " | " << p.below().cell() << " | " << p.above().cell() << " |\n";
+        md << "| " << cells << " | " << fig7_number(-1e3 * minus_dt) << " | " << fig7_number(threshold) << " | " << p.i.cell()
+           << " | " << p.ii.cell() << " | " << p.iii.cell() << " | " << p.below().cell() << " | " << p.above().cell() << " |\n";
         if (previous && -minus_dt == o.dt_max && std::get<0>(std::prev(it)->first) == threshold)
-            change("grid: " + std::to_string(cells) + " − " + std::to_string(std::get<2>(std::prev(it)->first)), threshold, p, *previous);
+            change("grid: " + std::to_string(cells) + " − " + std::to_string(std::get<2>(std::prev(it)->first)), threshold, p,
+                   *previous);
         if (-minus_dt != o.dt_max) {
             const auto coarse = rows.find({threshold, -o.dt_max, cells});
             if (coarse != rows.end())
-                change("dt: " + fig7_number(-1e3 * minus_dt) + " − " + fig7_number(1e3 * o.dt_max) + " ms", threshold, p, coarse->second);
+                change("dt: " + fig7_number(-1e3 * minus_dt) + " − " + fig7_number(1e3 * o.dt_max) + " ms", threshold, p,
+                       coarse->second);
         }
         previous = &p;
     }
-    md << "\nThe core's (r < d − layer) small-particle share at t_end = " << fig7_number(o.run.t_end) << " s ± its jitter over the last "
-       << fig7_number(o.run.jitter_window) << " s; muscl transport, packing feedback on. Written by bench_core_attribution.\n";
+    md << "\nThe core's (r < d − layer) small-particle share at t_end = " << fig7_number(o.run.t_end)
+       << " s ± its jitter over the last " << fig7_number(o.run.jitter_window)
+       << " s; muscl transport, packing feedback on. Written by bench_core_attribution.\n";
     write_file_atomically(o.run.data_dir + "/core_attribution.md", md.str());
 
     DataTable profile;
-    profile.comment("bench_core_attribution: run (i) at t_end on the vertical line through the axis (lab frame, mean of the cells within "
-                    "h/2 of x = 0 with Phi >= Phi_min): z (m), T (m^2/s^2), shear_rate kappa_max - kappa_min (1/s), phi_hat; one block per grid");
+    profile.comment(
+        "bench_core_attribution: run (i) at t_end on the vertical line through the axis (lab frame, mean of the cells within "
+        "h/2 of x = 0 with Phi >= Phi_min): z (m), T (m^2/s^2), shear_rate kappa_max - kappa_min (1/s), phi_hat; one block per "
+        "grid");
     for (int n : o.grids) append_profile(profile, o, n);
     write_file_atomically(o.run.data_dir + "/core_profile.dat", profile.str());
 }
@@ -229,16 +254,16 @@ int main(int argc, char** argv) {
     verify::parse_program_options(1, argv);  // only for its handling of the library's errors (exit 2, 3)
     const AttributionOptions o = parse(argc, argv);
     const std::vector<PlannedRun> runs = plan(o);
-    std::printf("%s: %zu runs of verification/scenes/tumbler.toml, t_end %g s, dt_max %g s, %d side by side%s\n", kProgram, runs.size(),
-                o.run.t_end, o.dt_max, o.run.lanes, o.run.reuse ? ", reusing unchanged runs" : "");
+    std::printf("%s: %zu runs of verification/scenes/tumbler.toml, t_end %g s, dt_max %g s, %d side by side%s\n", kProgram,
+                runs.size(), o.run.t_end, o.dt_max, o.run.lanes, o.run.reuse ? ", reusing unchanged runs" : "");
     std::vector<Fig7Result> results(runs.size());
     std::mutex print;
     run_side_by_side(static_cast<int>(runs.size()), o.run.lanes, [&](int j) {
         results[j] = run_fig7(runs[j].run, o.run);
         const Fig7Result& r = results[j];
         const std::lock_guard<std::mutex> lock(print);
-        std::printf("run %-24s %8.1f s wall: core %.4f ± %.4f, axis %.4f, layer %.2f mm, angle %.3f deg\n", r.run.name.c_str(), r.wall,
-                    r.value[kCore], r.sampling[kCore], r.value[kAxis], r.value[kLayer], r.value[kAngle]);
+        std::printf("run %-24s %8.1f s wall: core %.4f ± %.4f, axis %.4f, layer %.2f mm, angle %.3f deg\n", r.run.name.c_str(),
+                    r.wall, r.value[kCore], r.sampling[kCore], r.value[kAxis], r.value[kLayer], r.value[kAngle]);
         std::fflush(stdout);
     });
     write_results(runs, results, o);

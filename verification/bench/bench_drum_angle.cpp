@@ -1,8 +1,8 @@
 // The drum's dynamic angle of repose against resolution, in both time-stepping modes (docs/sect4.2_tumbler.md):
 // the tumbler-flow drum of verification/scenes/tumbler_flow.toml (25 s, angle averaged from 10 s)
 // at kRuns' cells per diameter, modes and dt_max: side by side, one per core, on one thread each
-// (the default), or one after another on OMP_NUM_THREADS threads when that is set above 1. Per run: steps, wall time, the angle's mean and standard deviation over
-// t >= angle_from, the flowing layer's mean thickness, the steps repeated with half the dt, the
+// (the default), or one after another on OMP_NUM_THREADS threads when that is set above 1. Per run: steps, wall time, the angle's
+// mean and standard deviation over t >= angle_from, the flowing layer's mean thickness, the steps repeated with half the dt, the
 // kinetic energy (relative to the drum) over t >= angle_from as min/mean and
 // max/mean (a rolling drum keeps both near 1; a slumping one falls by orders of magnitude between
 // avalanches), and the friction angle atan(mu) of the scene's material (Material::shear_friction,
@@ -49,19 +49,18 @@ namespace {
 constexpr const char* kScene = "verification/scenes/tumbler_flow.toml";
 
 struct Run {
-    int cells;          // cells per diameter
-    const char* mode;   // [flow] time_stepping
-    double dt_max;      // s, [flow] dt_max (1e-3 is the default; binds only the semi-implicit step)
+    int cells;         // cells per diameter
+    const char* mode;  // [flow] time_stepping
+    double dt_max;     // s, [flow] dt_max (1e-3 is the default; binds only the semi-implicit step)
 };
 // Explicit up to 100 cells (the paper's resolution); semi-implicit up to 100 at the
 // default dt_max, at 32 cells with a tenth of it, and at 50 and 100 cells from 0.25 to 4 ms: what a
 // longer (cheaper) step costs in angle and layer thickness.
 constexpr Run kRuns[] = {
-    {32, "explicit", 1e-3},       {50, "explicit", 1e-3},       {64, "explicit", 1e-3},
-    {100, "explicit", 1e-3},      {32, "semi-implicit", 1e-3},  {50, "semi-implicit", 1e-3},
-    {64, "semi-implicit", 1e-3},  {100, "semi-implicit", 1e-3}, {32, "semi-implicit", 1e-4},
-    {50, "semi-implicit", 2.5e-4}, {50, "semi-implicit", 5e-4}, {50, "semi-implicit", 2e-3},
-    {50, "semi-implicit", 4e-3},  {100, "semi-implicit", 2e-3}, {100, "semi-implicit", 4e-3},
+    {32, "explicit", 1e-3},      {50, "explicit", 1e-3},        {64, "explicit", 1e-3},       {100, "explicit", 1e-3},
+    {32, "semi-implicit", 1e-3}, {50, "semi-implicit", 1e-3},   {64, "semi-implicit", 1e-3},  {100, "semi-implicit", 1e-3},
+    {32, "semi-implicit", 1e-4}, {50, "semi-implicit", 2.5e-4}, {50, "semi-implicit", 5e-4},  {50, "semi-implicit", 2e-3},
+    {50, "semi-implicit", 4e-3}, {100, "semi-implicit", 2e-3},  {100, "semi-implicit", 4e-3},
 };
 
 /// The scene `base` with the run's resolution, mode and dt_max, without VTK output, as TOML text.
@@ -108,9 +107,8 @@ int main(int argc, char** argv) {
 
     DataTable table;
     table.comment("tumbler-flow drum of " + std::string(kScene) + ", 25 s; angle and kinetic energy over t >= " +
-                  verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s) per run, " + std::to_string(lanes) +
-                  " run(s) side by side; load average at start " +
-                  verify::load_average());
+                  verify::format(angle_from) + " s; " + std::to_string(threads) + " OpenMP thread(s) per run, " +
+                  std::to_string(lanes) + " run(s) side by side; load average at start " + verify::load_average());
     table.comment("semi_implicit: 0 explicit, 1 semi-implicit; h = D / cells");
     std::vector<double> h[2], angle[2];  // per mode, dt_max 1 ms: for the first-order extrapolation h -> 0
     double friction = NAN;
@@ -125,7 +123,8 @@ int main(int argc, char** argv) {
     verify::run_side_by_side(kJobs, lanes, [&](int j) {
         const std::string dir = run_dir(kRuns[j]);
         write_file_atomically(dir + ".toml", scene_text(base, kRuns[j]));
-        // A run that finished is only written out again, an interrupted one resumes (docs/checkpoints.md); its wall time covers all its parts.
+        // A run that finished is only written out again, an interrupted one resumes (docs/checkpoints.md); its wall time covers
+        // all its parts.
         run_scene_file(dir + ".toml", dir, Resume::if_compatible);
         walls[j] = verify::last_row(dir + "/summary.dat").at("wall_seconds");
         std::fprintf(stderr, "bench_drum_angle: %s done in %.0f s\n", dir.c_str(), walls[j]);
@@ -144,11 +143,19 @@ int main(int argc, char** argv) {
         const auto history = history_range(verify::read_rows(dir + "/history.dat"), angle_from);
         const bool is_explicit = std::string(r.mode) == "explicit";
         const double h_mm = 1e3 * diameter / r.cells;
-        table.row({{"cells", double(r.cells)}, {"semi_implicit", is_explicit ? 0.0 : 1.0}, {"dt_max", r.dt_max},
-                    {"h_mm", h_mm}, {"steps", s[1]}, {"wall_s", wall}, {"angle_mean_deg", s[2]},
-                    {"angle_std_deg", s[3]}, {"ke_min_over_mean", history.ke_min},
-                    {"ke_max_over_mean", history.ke_max}, {"friction_deg", friction}, {"layer_mm", 1e3 * s[6]},
-                    {"steps_halved", s[8 + static_cast<int>(StepBound::halved)]}});
+        table.row({{"cells", double(r.cells)},
+                   {"semi_implicit", is_explicit ? 0.0 : 1.0},
+                   {"dt_max", r.dt_max},
+                   {"h_mm", h_mm},
+                   {"steps", s[1]},
+                   {"wall_s", wall},
+                   {"angle_mean_deg", s[2]},
+                   {"angle_std_deg", s[3]},
+                   {"ke_min_over_mean", history.ke_min},
+                   {"ke_max_over_mean", history.ke_max},
+                   {"friction_deg", friction},
+                   {"layer_mm", 1e3 * s[6]},
+                   {"steps_halved", s[8 + static_cast<int>(StepBound::halved)]}});
         checks.note(tag + ": " + verify::format(s[1]) + " steps, " + verify::format(wall) + " s wall; angle " +
                     verify::format(s[2]) + " +- " + verify::format(s[3]) + " deg (friction angle " + verify::format(friction) +
                     "); layer " + verify::format(1e3 * s[6]) + " mm; kinetic energy min/mean " + verify::format(history.ke_min) +
@@ -165,16 +172,16 @@ int main(int argc, char** argv) {
         for (std::size_t j = 0; j < h[1].size(); ++j)
             if (h[0][i] == h[1][j]) {
                 const double gap = angle[0][i] - angle[1][j];
-                gaps.row({{"h_mm", h[0][i]}, {"explicit_deg", angle[0][i]}, {"semi_implicit_deg", angle[1][j]},
-                           {"gap_deg", gap}});
+                gaps.row(
+                    {{"h_mm", h[0][i]}, {"explicit_deg", angle[0][i]}, {"semi_implicit_deg", angle[1][j]}, {"gap_deg", gap}});
                 if (gap > 0.0) log_h.push_back(std::log(h[0][i])), log_gap.push_back(std::log(gap));
             }
     if (log_h.size() < 2) return checks.finish();  // no power law through fewer than two positive gaps
     const Polynomial power = fit_polynomial(log_h, log_gap, 1);
     const double p = power.c[1];
     const std::string law = "gap explicit - semi-implicit = " + verify::format(std::exp(power.c[0])) + " deg h^" +
-                            verify::format(p) + " (h in mm; log-log least squares over " +
-                            std::to_string(log_h.size()) + " resolutions)";
+                            verify::format(p) + " (h in mm; log-log least squares over " + std::to_string(log_h.size()) +
+                            " resolutions)";
     gaps.comment(law);
     table.comment(law);
     checks.note(law);
@@ -185,9 +192,9 @@ int main(int argc, char** argv) {
         const Polynomial fit = fit_polynomial(hp, angle[mode], 1);
         const double a = fit.c[0], b = fit.c[1];
         const std::string text = std::string(mode == 0 ? "explicit" : "semi-implicit (dt_max 1 ms)") +
-                                 " runs, least squares angle = " + verify::format(a) + " + " + verify::format(b) +
-                                 " deg h^" + verify::format(p) + ": at h = 0 " + verify::format(a) + " deg, " +
-                                 verify::format(a - friction) + " deg above the friction angle";
+                                 " runs, least squares angle = " + verify::format(a) + " + " + verify::format(b) + " deg h^" +
+                                 verify::format(p) + ": at h = 0 " + verify::format(a) + " deg, " + verify::format(a - friction) +
+                                 " deg above the friction angle";
         table.comment(text);
         checks.note(text);
     }

@@ -14,7 +14,6 @@
 #include "harness/program.hpp"
 #include "scenes/scene_kind.hpp"
 
-
 #include <cstdio>
 #include <string>
 
@@ -33,8 +32,9 @@ constexpr Scene kScenes[] = {{"drum_square", "square, half full"}, {"drum_triang
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
     const std::string load_before = verify::load_average();
-    std::string md = "| drum | inside cells | flow steps | wall time | angle of repose | segregation index | periphery | axis |\n"
-                     "|---|---|---|---|---|---|---|---|\n";
+    std::string md =
+        "| drum | inside cells | flow steps | wall time | angle of repose | segregation index | periphery | axis |\n"
+        "|---|---|---|---|---|---|---|---|\n";
     for (const Scene& s : kScenes) {
         const std::string dir = options.data_dir + "/" + s.name;
         // A run that finished is only written out again, an interrupted one resumes; its wall time

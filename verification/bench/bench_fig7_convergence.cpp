@@ -40,8 +40,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <sstream>
 
@@ -64,9 +64,11 @@ Fig7Options parse(int argc, char** argv) {
     po::options_description d("bench_fig7_convergence: solution verification of the paper's drum (Fig. 7)");
     d.add_options()("help", "this list")("data", po::value(&o.data_dir)->default_value(o.data_dir), "output directory")(
         "cells", po::value(&cells)->default_value(cells), "cells per diameter of the grid series, coarse to fine (3 or more)")(
-        "transports", po::value(&transports)->default_value(transports), "[flow] transport of each grid series; the first is the reference")(
-        "explicit-cells", po::value(&explicit_cells)->default_value(explicit_cells), "explicit time stepping (none, or 2 or more)")(
-        "dt-ref", po::value(&o.dt_ref)->default_value(o.dt_ref), "s, dt_max at 50 cells per diameter; every run takes dt_ref 50/cells")(
+        "transports", po::value(&transports)->default_value(transports),
+        "[flow] transport of each grid series; the first is the reference")(
+        "explicit-cells", po::value(&explicit_cells)->default_value(explicit_cells),
+        "explicit time stepping (none, or 2 or more)")("dt-ref", po::value(&o.dt_ref)->default_value(o.dt_ref),
+                                                       "s, dt_max at 50 cells per diameter; every run takes dt_ref 50/cells")(
         "dt-coarse", po::value(&dt_coarse)->default_value(dt_coarse), "dt_max factors of the dt study at the coarsest grid")(
         "dt-fine", po::value(&dt_fine)->default_value(dt_fine), "dt_max factors of the dt study at the finest grid")(
         "no-dt-study", "skip the dt study")("no-core-study", "skip the tracer and T_floor runs (check d)")(
@@ -75,7 +77,8 @@ Fig7Options parse(int argc, char** argv) {
     const po::variables_map vm = parse_study_command_line(kProgram, argc, argv, d, o);
     o.cells = cell_list(kProgram, "cells", cells), o.explicit_cells = cell_list(kProgram, "explicit-cells", explicit_cells);
     o.transports = transport_list(kProgram, transports);
-    o.dt_coarse = number_list(kProgram, "dt-coarse", dt_coarse, 0.0, 1.0), o.dt_fine = number_list(kProgram, "dt-fine", dt_fine, 0.0, 1.0);
+    o.dt_coarse = number_list(kProgram, "dt-coarse", dt_coarse, 0.0, 1.0),
+    o.dt_fine = number_list(kProgram, "dt-fine", dt_fine, 0.0, 1.0);
     o.dt_study = !vm.count("no-dt-study"), o.core_study = !vm.count("no-core-study");
     if (o.cells.size() < 3) bad_option("cells", "\"" + cells + "\" has fewer than three grids", "three or more");
     if (o.explicit_cells.size() == 1) bad_option("explicit-cells", "one grid", "none, or two or more");
@@ -93,9 +96,10 @@ int main(int argc, char** argv) {
     verify::parse_program_options(1, argv);  // only for its handling of the library's errors (exit 2, 3)
     const Fig7Options o = parse(argc, argv);
     const std::vector<Fig7Run> plan = plan_fig7_runs(o);
-    std::printf("bench_fig7_convergence: %zu runs of verification/scenes/tumbler.toml, t_end %g s, %d thread(s) each, "
-                "%d side by side%s\n",
-                plan.size(), o.t_end, o.threads, o.lanes, o.reuse ? ", reusing unchanged runs" : "");
+    std::printf(
+        "bench_fig7_convergence: %zu runs of verification/scenes/tumbler.toml, t_end %g s, %d thread(s) each, "
+        "%d side by side%s\n",
+        plan.size(), o.t_end, o.threads, o.lanes, o.reuse ? ", reusing unchanged runs" : "");
     const auto start = std::chrono::steady_clock::now();
     std::vector<Fig7Result> results(plan.size());
     std::mutex print;
@@ -104,10 +108,12 @@ int main(int argc, char** argv) {
         results[j] = run_fig7(run, o);
         const Fig7Result& r = results[j];
         const std::lock_guard<std::mutex> lock(print);
-        std::printf("run %-22s %8.1f s wall (%.1f s CPU), %7.0f steps: angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, periphery %.4f, "
-                    "core %.4f, contrast %.4f, axis %.4f\n",
-                    run.name.c_str(), r.wall, r.cpu, r.steps, r.value[0], r.value[1], r.value[2], r.value[3], r.value[4], r.value[5],
-                    r.value[6], r.value[7]);
+        std::printf(
+            "run %-22s %8.1f s wall (%.1f s CPU), %7.0f steps: angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, periphery "
+            "%.4f, "
+            "core %.4f, contrast %.4f, axis %.4f\n",
+            run.name.c_str(), r.wall, r.cpu, r.steps, r.value[0], r.value[1], r.value[2], r.value[3], r.value[4], r.value[5],
+            r.value[6], r.value[7]);
         std::fflush(stdout);
     });
     std::printf("all runs: %.1f s wall\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -116,10 +122,10 @@ int main(int argc, char** argv) {
     const std::vector<std::string> answers = write_fig7_work(analysis, o);
     std::printf("\n");
     for (const Fig7Estimate& e : analysis.estimates)
-        std::printf("%-9s %-8s %-12s p %-8s Fs %-4s f0 %-10s%s U %-9s (se %s)\n", fig7_quantities()[e.quantity].name, e.series.c_str(),
-                    convergence_name(e.g.condition).c_str(), fig7_number(e.g.p, 4).c_str(), fig7_number(e.g.fs, 3).c_str(),
-                    fig7_number(e.g.f0).c_str(), e.g.outside_bounds ? " (outside its range)" : "", fig7_number(e.g.uncertainty, 4).c_str(),
-                    fig7_number(e.se_max, 3).c_str());
+        std::printf("%-9s %-8s %-12s p %-8s Fs %-4s f0 %-10s%s U %-9s (se %s)\n", fig7_quantities()[e.quantity].name,
+                    e.series.c_str(), convergence_name(e.g.condition).c_str(), fig7_number(e.g.p, 4).c_str(),
+                    fig7_number(e.g.fs, 3).c_str(), fig7_number(e.g.f0).c_str(), e.g.outside_bounds ? " (outside its range)" : "",
+                    fig7_number(e.g.uncertainty, 4).c_str(), fig7_number(e.se_max, 3).c_str());
     std::printf("\n");
     for (const std::string& a : answers) std::printf("%s\n", a.c_str());
     std::printf("\n");

@@ -78,9 +78,12 @@ Sample window(TimeStepping mode, int n, int steps) {
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
     DataTable table;
-    table.comment("tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps) from its initial state (bed at rest, before the first "
-                  "avalanche); medians of " + std::to_string(kRuns) + " windows; ratio: explicit wall per drum second over "
-                  "this row's (semi-implicit rows)");
+    table.comment(
+        "tumbler-flow drum (D = 0.1 m, 75 % fill, 0.1 rps) from its initial state (bed at rest, before the first "
+        "avalanche); medians of " +
+        std::to_string(kRuns) +
+        " windows; ratio: explicit wall per drum second over "
+        "this row's (semi-implicit rows)");
     std::printf("%-14s %-6s %-7s %-8s %-9s %-9s %-10s %-10s %-9s %-7s %-7s %-6s\n", "mode", "cells", "threads", "inside",
                 "ns/cell", "dt (s)", "steps/s", "wall/s", "25 s (s)", "newton", "krylov", "ratio");
     for (int n : {50, 100, 200}) {
@@ -103,19 +106,26 @@ int main(int argc, char** argv) {
                 const double wall = cost / step, semi = mode == TimeStepping::semi_implicit;
                 if (!semi) explicit_wall = wall;
                 const double ratio = semi ? explicit_wall / wall : 1.0;
-                TableRow row{{"semi_implicit", semi}, {"cells_per_diameter", static_cast<double>(n)},
-                             {"threads", static_cast<double>(threads)}, {"inside_cells", static_cast<double>(last.cells)},
-                             {"ns_per_cell_step", verify::median(ns)}, {"dt", step}, {"steps_per_drum_second", 1.0 / step},
-                             {"wall_per_drum_second", wall}, {"seconds_for_25s", kRunLength * wall},
-                             {"solves_per_step", verify::median(solves)}, {"newton_per_solve", verify::median(newton)},
-                             {"krylov_per_newton", verify::median(krylov)}, {"temperature_cg_per_step", verify::median(temperature)}};
+                TableRow row{{"semi_implicit", semi},
+                             {"cells_per_diameter", static_cast<double>(n)},
+                             {"threads", static_cast<double>(threads)},
+                             {"inside_cells", static_cast<double>(last.cells)},
+                             {"ns_per_cell_step", verify::median(ns)},
+                             {"dt", step},
+                             {"steps_per_drum_second", 1.0 / step},
+                             {"wall_per_drum_second", wall},
+                             {"seconds_for_25s", kRunLength * wall},
+                             {"solves_per_step", verify::median(solves)},
+                             {"newton_per_solve", verify::median(newton)},
+                             {"krylov_per_newton", verify::median(krylov)},
+                             {"temperature_cg_per_step", verify::median(temperature)}};
                 for (int k = 0; k < kFlowStages; ++k)
                     row.add(std::string("share_") + flow_stage_name(static_cast<FlowStage>(k)), verify::median(share[k]));
                 row.add("ratio_explicit_to_semi", ratio);
                 table.row(row);
                 std::printf("%-14s %-6d %-7d %-8zu %-9.0f %-9.3g %-10.4g %-10.3g %-9.3g %-7.2f %-7.1f %-6.2f\n",
-                            choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, verify::median(ns), step, 1.0 / step,
-                            wall, kRunLength * wall, verify::median(newton), verify::median(krylov), ratio);
+                            choice_name(kTimeSteppings, mode).c_str(), n, threads, last.cells, verify::median(ns), step,
+                            1.0 / step, wall, kRunLength * wall, verify::median(newton), verify::median(krylov), ratio);
                 std::fflush(stdout);
             }
         }

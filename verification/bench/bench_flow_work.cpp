@@ -83,14 +83,22 @@ void manufactured(const Material& m, DataTable& table) {
             const double dt = verify::kManufacturedEnd / r.steps;
             const double cg = static_cast<double>(r.work.krylov) / r.steps;
             table.row({{"problem", 0.0},
-                        {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
-                        {"dt_rule", v.rule}, {"n", static_cast<double>(n)}, {"steps", static_cast<double>(r.steps)},
-                        {"dt_mean", dt}, {"cg_per_step", cg}, {"cpu_seconds", verify::median(cpu)},
-                        {"wall_seconds", verify::median(wall)}, {"error_Phi", r.error_Phi}, {"error_u", r.error_u},
-                        {"error_T", r.error_T}, {"angle_cpu_seconds", 0.0}, {"angle_wall_seconds", 0.0},
-                        {"angle_error_deg", 0.0}});
-            std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g\n", label(v, "s/m").c_str(), n,
-                        r.steps, dt, cg, verify::median(cpu), verify::median(wall), r.error_Phi, r.error_u, r.error_T);
+                       {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
+                       {"dt_rule", v.rule},
+                       {"n", static_cast<double>(n)},
+                       {"steps", static_cast<double>(r.steps)},
+                       {"dt_mean", dt},
+                       {"cg_per_step", cg},
+                       {"cpu_seconds", verify::median(cpu)},
+                       {"wall_seconds", verify::median(wall)},
+                       {"error_Phi", r.error_Phi},
+                       {"error_u", r.error_u},
+                       {"error_T", r.error_T},
+                       {"angle_cpu_seconds", 0.0},
+                       {"angle_wall_seconds", 0.0},
+                       {"angle_error_deg", 0.0}});
+            std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g\n", label(v, "s/m").c_str(), n, r.steps,
+                        dt, cg, verify::median(cpu), verify::median(wall), r.error_Phi, r.error_u, r.error_T);
             std::fflush(stdout);
         }
         table.blank();
@@ -102,8 +110,10 @@ void incline(const Material& m, DataTable& table) {
     const double theta_mu = std::atan(std::sqrt(2.0 * m.eta0 * m.eps0 / 3.0)) * 180.0 / M_PI;
     std::vector<Variant> variants{{TimeStepping::explicit_waves, 0.0}};
     for (double dt_max : kInclineDtMax) variants.push_back({TimeStepping::semi_implicit, dt_max});
-    std::printf("\ninclined plane: profiles after %g s at the solver's critical angle theta_c; theta_c - atan(mu) "
-                "(atan(mu) = %.4f deg)\n", kProfileTime, theta_mu);
+    std::printf(
+        "\ninclined plane: profiles after %g s at the solver's critical angle theta_c; theta_c - atan(mu) "
+        "(atan(mu) = %.4f deg)\n",
+        kProfileTime, theta_mu);
     std::printf("%-18s %5s %7s %10s %7s %10s %10s %10s %10s %10s %10s %10s\n", "mode (dt_max)", "nz", "steps", "dt (s)",
                 "CG/step", "CPU (s)", "wall (s)", "u rel.", "Phi", "T spread", "angle CPU", "angle err");
     for (const Variant& v : variants) {
@@ -121,15 +131,23 @@ void incline(const Material& m, DataTable& table) {
             const double dt = kProfileTime / r.steps, angle_error = std::fabs(theta_c - theta_mu);
             const double cg = static_cast<double>(r.work.krylov) / r.steps;
             table.row({{"problem", 1.0},
-                        {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
-                        {"dt_rule", v.rule}, {"n", static_cast<double>(nz)}, {"steps", static_cast<double>(r.steps)},
-                        {"dt_mean", dt}, {"cg_per_step", cg}, {"cpu_seconds", verify::median(cpu)},
-                        {"wall_seconds", verify::median(wall)}, {"error_Phi", e.Phi}, {"error_u", e.u},
-                        {"error_T", e.T_spread}, {"angle_cpu_seconds", angle_time.cpu},
-                        {"angle_wall_seconds", angle_time.wall}, {"angle_error_deg", angle_error}});
-            std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g\n",
-                        label(v, "s").c_str(), nz, r.steps, dt, cg, verify::median(cpu), verify::median(wall), e.u, e.Phi,
-                        e.T_spread, angle_time.cpu, angle_error);
+                       {"semi_implicit", static_cast<double>(v.mode == TimeStepping::semi_implicit)},
+                       {"dt_rule", v.rule},
+                       {"n", static_cast<double>(nz)},
+                       {"steps", static_cast<double>(r.steps)},
+                       {"dt_mean", dt},
+                       {"cg_per_step", cg},
+                       {"cpu_seconds", verify::median(cpu)},
+                       {"wall_seconds", verify::median(wall)},
+                       {"error_Phi", e.Phi},
+                       {"error_u", e.u},
+                       {"error_T", e.T_spread},
+                       {"angle_cpu_seconds", angle_time.cpu},
+                       {"angle_wall_seconds", angle_time.wall},
+                       {"angle_error_deg", angle_error}});
+            std::printf("%-18s %5d %7ld %10.3g %7.1f %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g %10.3g\n", label(v, "s").c_str(),
+                        nz, r.steps, dt, cg, verify::median(cpu), verify::median(wall), e.u, e.Phi, e.T_spread, angle_time.cpu,
+                        angle_error);
             std::fflush(stdout);
         }
         table.blank();
@@ -143,15 +161,19 @@ int main(int argc, char** argv) {
     const auto [options, m] = verify::flow_program(argc, argv);  // one OpenMP thread
     const std::string load_before = verify::load_average();
     DataTable table;
-    table.comment("problem 0 manufactured solution (n x n cells; errors: mean |error| of Phi, |u| in m/s, T in m^2/s^2 at "
-                  "t_end), 1 inclined plane (nz cells; errors after 2 s at the solver's critical angle: max |Phi - Phi_bvp|, "
-                  "max |u - u_bvp|/u_bvp(depth), relative spread of T; angle: |theta_c - atan(mu)| by bisection, its CPU "
-                  "time the sum of 11 runs)");
-    table.comment("dt_rule: 0 explicit (sound speed); semi-implicit: manufactured k in dt_max = k h (s/m), incline dt_max "
-                  "(s); dt_mean = simulated time / steps; cg_per_step: conjugate-gradient iterations of the pressure solves "
-                  "per step; cpu_seconds (CLOCK_PROCESS_CPUTIME_ID), wall_seconds (steady_clock): the solver's time "
-                  "loop, one thread, medians of " + std::to_string(kRepeats) + " runs; one gnuplot index per (problem, "
-                  "mode, dt_rule), in the order of the rows");
+    table.comment(
+        "problem 0 manufactured solution (n x n cells; errors: mean |error| of Phi, |u| in m/s, T in m^2/s^2 at "
+        "t_end), 1 inclined plane (nz cells; errors after 2 s at the solver's critical angle: max |Phi - Phi_bvp|, "
+        "max |u - u_bvp|/u_bvp(depth), relative spread of T; angle: |theta_c - atan(mu)| by bisection, its CPU "
+        "time the sum of 11 runs)");
+    table.comment(
+        "dt_rule: 0 explicit (sound speed); semi-implicit: manufactured k in dt_max = k h (s/m), incline dt_max "
+        "(s); dt_mean = simulated time / steps; cg_per_step: conjugate-gradient iterations of the pressure solves "
+        "per step; cpu_seconds (CLOCK_PROCESS_CPUTIME_ID), wall_seconds (steady_clock): the solver's time "
+        "loop, one thread, medians of " +
+        std::to_string(kRepeats) +
+        " runs; one gnuplot index per (problem, "
+        "mode, dt_rule), in the order of the rows");
     table.comment("load average before: " + load_before);
     manufactured(m, table);
     incline(m, table);

@@ -35,7 +35,7 @@ namespace {
 
 constexpr int kRepetitions = 5;
 constexpr int kReferenceCells = 102400;
-constexpr double kTarget = 1e-3;  // the L1 error whose cost the summary quotes
+constexpr double kTarget = 1e-3;     // the L1 error whose cost the summary quotes
 constexpr int kRateFromCells = 800;  // the rate of cell updates is the median over N >= this
 
 const std::vector<int> kCells = {50, 100, 200, 400, 800, 1600, 3200, 6400, 12800};
@@ -111,8 +111,9 @@ struct MarkdownRow {
 
 /// The markdown table of bench_segregation.md.
 std::string markdown_table(const std::vector<MarkdownRow>& rows) {
-    std::string out = "| scheme | CPU time to L1 = 1e-3, two-shock batch | million cell updates per second, Fig. 6 column, N >= " +
-                      std::to_string(kRateFromCells) + " |\n|---|---|---|\n";
+    std::string out =
+        "| scheme | CPU time to L1 = 1e-3, two-shock batch | million cell updates per second, Fig. 6 column, N >= " +
+        std::to_string(kRateFromCells) + " |\n|---|---|---|\n";
     for (std::size_t s = 0; s < kSchemes.size(); ++s) {
         char line[200];
         std::snprintf(line, sizeof line, "| %s | %.2f ms | %.0f |\n", scheme_name(kSchemes[s]).c_str(),
@@ -139,11 +140,12 @@ int main(int argc, char** argv) {
     const ProgramOptions options = parse_program_options(argc, argv);
     const std::string load_before = load_average();
     DataTable table;
-    table.comment("problem: 0 two-shock, 1 fig6, 2 graded; scheme: 0 modified-godunov, 1 modified-godunov-2, "
-                  "2 classic-upwind, 3 classic-godunov; CPU seconds, median of " + std::to_string(kRepetitions) + " runs");
+    table.comment(
+        "problem: 0 two-shock, 1 fig6, 2 graded; scheme: 0 modified-godunov, 1 modified-godunov-2, "
+        "2 classic-upwind, 3 classic-godunov; CPU seconds, median of " +
+        std::to_string(kRepetitions) + " runs");
     table.comment("load average before: " + load_before);
-    std::printf("%-10s %-19s %6s %11s %11s %11s %9s\n", "problem", "scheme", "N", "L1", "cpu median", "(min..max)",
-                "Mupd/s");
+    std::printf("%-10s %-19s %6s %11s %11s %11s %9s\n", "problem", "scheme", "N", "L1", "cpu median", "(min..max)", "Mupd/s");
     std::vector<std::string> summary;
     std::vector<MarkdownRow> markdown(kSchemes.size());
     int p = 0;
@@ -167,10 +169,15 @@ int main(int argc, char** argv) {
                 errors.push_back(error);
                 medians.push_back(median);
                 if (problem.name == "fig6" && N >= kRateFromCells) markdown[s].fig6_rates.push_back(rate);
-                table.row({{"problem", static_cast<double>(p)}, {"scheme", static_cast<double>(s)},
-                            {"N", static_cast<double>(N)}, {"L1", error}, {"cpu_median", median},
-                            {"cpu_min", seconds.front()}, {"cpu_max", seconds.back()},
-                            {"updates", static_cast<double>(run.updates)}, {"Mupdates_per_s", rate}});
+                table.row({{"problem", static_cast<double>(p)},
+                           {"scheme", static_cast<double>(s)},
+                           {"N", static_cast<double>(N)},
+                           {"L1", error},
+                           {"cpu_median", median},
+                           {"cpu_min", seconds.front()},
+                           {"cpu_max", seconds.back()},
+                           {"updates", static_cast<double>(run.updates)},
+                           {"Mupdates_per_s", rate}});
                 std::printf("%-10s %-19s %6d %11.4e %11.4e %5.0f..%-5.0f%% %9.1f\n", problem.name.c_str(),
                             scheme_name(kSchemes[s]).c_str(), N, error, median, 100 * seconds.front() / median,
                             100 * seconds.back() / median, rate);

@@ -22,8 +22,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <sstream>
 
@@ -62,19 +62,24 @@ std::vector<DtGrid> grid_list(const std::string& text) {
 DtStudyOptions parse(int argc, char** argv) {
     DtStudyOptions o;
     o.run.study_dir = "time_step";
-    std::string grids = "50:2e-3,1e-3,5e-4,2.5e-4;100:2e-3,1e-3,5e-4", transports = "muscl,donor-cell", parts = "no-feedback,feedback";
+    std::string grids = "50:2e-3,1e-3,5e-4,2.5e-4;100:2e-3,1e-3,5e-4", transports = "muscl,donor-cell",
+                parts = "no-feedback,feedback";
     po::options_description d("bench_time_step: the coupled drum's time-step error");
     d.add_options()("help", "this list")("data", po::value(&o.run.data_dir)->default_value(o.run.data_dir), "output directory")(
-        "grids", po::value(&grids)->default_value(grids), "CELLS:DT_MAX,... per grid, ';' between grids, largest dt_max first (the default step)")(
+        "grids", po::value(&grids)->default_value(grids),
+        "CELLS:DT_MAX,... per grid, ';' between grids, largest dt_max first (the default step)")(
         "transports", po::value(&transports)->default_value(transports), "[flow] transport of each series")(
         "parts", po::value(&parts)->default_value(parts), "no-feedback, feedback or both ([coupling] packing_feedback)");
     add_run_options(d, o.run);
     parse_study_command_line(kProgram, argc, argv, d, o.run);
     o.grids = grid_list(grids);
     o.run.transports = transport_list(kProgram, transports);
-    if (parts == "no-feedback") o.feedback = {false};
-    else if (parts == "feedback") o.feedback = {true};
-    else if (parts != "no-feedback,feedback") bad_option(kProgram, "parts", "\"" + parts + "\"", "no-feedback, feedback, no-feedback,feedback");
+    if (parts == "no-feedback")
+        o.feedback = {false};
+    else if (parts == "feedback")
+        o.feedback = {true};
+    else if (parts != "no-feedback,feedback")
+        bad_option(kProgram, "parts", "\"" + parts + "\"", "no-feedback, feedback, no-feedback,feedback");
     check_run_options(kProgram, o.run);
     return o;
 }
@@ -94,26 +99,28 @@ int main(int argc, char** argv) {
         results[j] = run_fig7(plan[j], o.run);
         const Fig7Result& r = results[j];
         const std::lock_guard<std::mutex> lock(print);
-        std::printf("run %-34s %8.1f s wall, %7.0f steps (%.3f set by dt_max): angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, "
-                    "core %.4f, contrast %.4f, axis %.4f\n",
-                    r.run.name.c_str(), r.wall, r.steps, r.dt_max_share, r.value[kAngle], r.value[kLayer], r.value[kIndex],
-                    r.value[kRing], r.value[kCore], r.value[kContrast], r.value[kAxis]);
+        std::printf(
+            "run %-34s %8.1f s wall, %7.0f steps (%.3f set by dt_max): angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, "
+            "core %.4f, contrast %.4f, axis %.4f\n",
+            r.run.name.c_str(), r.wall, r.steps, r.dt_max_share, r.value[kAngle], r.value[kLayer], r.value[kIndex],
+            r.value[kRing], r.value[kCore], r.value[kContrast], r.value[kAxis]);
         std::fflush(stdout);
     });
     std::printf("all runs: %.1f s wall\n\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const std::vector<DtEstimate> estimates = analyse_dt(results, o);
     write_dt_study(results, estimates, o);
     for (const DtEstimate& d : estimates)
-        std::printf("%-11s %-10s n%-4d %-9s %-13s p %-6s f0 %-10s at the largest dt %-10s error %-10s bound %s\n", part_name(d.feedback).c_str(),
-                    d.transport.c_str(), d.cells, fig7_quantities()[d.e.quantity].name, convergence_name(d.e.g.condition).c_str(),
-                    fig7_number(d.e.g.p, 3).c_str(), fig7_number(d.e.g.f0).c_str(), fig7_number(d.at_default).c_str(),
-                    fig7_number(d.error, 3).c_str(), fig7_number(d.bound, 3).c_str());
+        std::printf("%-11s %-10s n%-4d %-9s %-13s p %-6s f0 %-10s at the largest dt %-10s error %-10s bound %s\n",
+                    part_name(d.feedback).c_str(), d.transport.c_str(), d.cells, fig7_quantities()[d.e.quantity].name,
+                    convergence_name(d.e.g.condition).c_str(), fig7_number(d.e.g.p, 3).c_str(), fig7_number(d.e.g.f0).c_str(),
+                    fig7_number(d.at_default).c_str(), fig7_number(d.error, 3).c_str(), fig7_number(d.bound, 3).c_str());
     std::printf("\n");
     CheckTable table("bench_time_step: the full model's time error at the default step");
     for (const DtEstimate& d : estimates) {
         if (!d.feedback || (d.e.quantity != kAngle && d.e.quantity != kAxis && d.e.quantity != kCore)) continue;
         const std::string series = d.transport + ", " + std::to_string(d.cells) + " cells: ";
-        table.at_most(series + fig7_quantities()[d.e.quantity].name + " at dt_max " + fig7_number(1e3 * d.e.h.back(), 3) + " ms from its limit",
+        table.at_most(series + fig7_quantities()[d.e.quantity].name + " at dt_max " + fig7_number(1e3 * d.e.h.back(), 3) +
+                          " ms from its limit",
                       d.bound, d.e.quantity == kAngle ? kAngleTarget : kShareTarget);
     }
     return table.finish();

@@ -29,8 +29,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -89,25 +89,35 @@ std::string explicit_scene(const std::string& path, const std::string& dir) {
 /// printed and written to bench_tumbler_modes.dat.
 void write_modes(const verify::ProgramOptions& options, const std::vector<std::pair<std::vector<double>, std::string>>& modes) {
     DataTable table;
-    table.comment("tumbler-flow, 100 cells per diameter, 25 s: 0 explicit, 1 semi-implicit; angle and flowing-layer "
-                  "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from; ns per "
-                  "cell and step from the median wall time; shares of the timed stages");
+    table.comment(
+        "tumbler-flow, 100 cells per diameter, 25 s: 0 explicit, 1 semi-implicit; angle and flowing-layer "
+        "thickness (area of the flowing bed over the surface chord) averaged over t >= angle_from; ns per "
+        "cell and step from the median wall time; shares of the timed stages");
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const auto& [walls, dir] = modes[m];
         const auto s = verify::last_row(dir + "/summary.dat");
         const double steps = s.at("steps"), solves = std::max(1.0, s.at("pressure_solves"));
         double staged = 0.0;
-        for (int k = 0; k < kFlowStages; ++k) staged += s.at(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
-        const double ns = 1e9 * verify::median(walls) / (steps * s.at("inside_cells")), per_step = s.at("pressure_solves") / steps,
-                     newton = s.at("newton") / solves, krylov = s.at("krylov") / std::max(1.0, s.at("newton")),
+        for (int k = 0; k < kFlowStages; ++k)
+            staged += s.at(std::string("seconds_") + flow_stage_name(static_cast<FlowStage>(k)));
+        const double ns = 1e9 * verify::median(walls) / (steps * s.at("inside_cells")),
+                     per_step = s.at("pressure_solves") / steps, newton = s.at("newton") / solves,
+                     krylov = s.at("krylov") / std::max(1.0, s.at("newton")),
                      temperature = s.at("temperature_iterations") / steps;
-        TableRow row{{"semi_implicit", static_cast<double>(m)}, {"wall_median_s", verify::median(walls)},
+        TableRow row{{"semi_implicit", static_cast<double>(m)},
+                     {"wall_median_s", verify::median(walls)},
                      {"wall_min_s", *std::min_element(walls.begin(), walls.end())},
-                     {"wall_max_s", *std::max_element(walls.begin(), walls.end())}, {"steps", steps},
-                     {"angle_mean_deg", s.at("angle_mean_deg")}, {"angle_std_deg", s.at("angle_std_deg")},
-                     {"layer_mean_mm", 1e3 * s.at("layer_mean")}, {"layer_std_mm", 1e3 * s.at("layer_std")},
-                     {"ns_per_cell_step", ns}, {"solves_per_step", per_step}, {"newton_per_solve", newton},
-                     {"krylov_per_newton", krylov}, {"temperature_cg_per_step", temperature}};
+                     {"wall_max_s", *std::max_element(walls.begin(), walls.end())},
+                     {"steps", steps},
+                     {"angle_mean_deg", s.at("angle_mean_deg")},
+                     {"angle_std_deg", s.at("angle_std_deg")},
+                     {"layer_mean_mm", 1e3 * s.at("layer_mean")},
+                     {"layer_std_mm", 1e3 * s.at("layer_std")},
+                     {"ns_per_cell_step", ns},
+                     {"solves_per_step", per_step},
+                     {"newton_per_solve", newton},
+                     {"krylov_per_newton", krylov},
+                     {"temperature_cg_per_step", temperature}};
         std::string shares;
         for (int k = 0; k < kFlowStages; ++k) {
             const std::string name = flow_stage_name(static_cast<FlowStage>(k));
@@ -116,12 +126,12 @@ void write_modes(const verify::ProgramOptions& options, const std::vector<std::p
             shares += " " + name + " " + verify::format(100.0 * share) + "%";
         }
         table.row(row);
-        std::printf("%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm, %.0f ns per cell "
-                    "and step; per step %.2f solves, %.2f Newton per solve, %.2f CG per Newton, %.1f temperature CG; "
-                    "shares:%s\n",
-                    m == 0 ? "explicit" : "semi-implicit", verify::median(walls), steps, s.at("angle_mean_deg"),
-                    s.at("angle_std_deg"), 1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"), ns, per_step, newton,
-                    krylov, temperature, shares.c_str());
+        std::printf(
+            "%s: wall median %.1f s, %.0f steps, angle %.2f +- %.2f deg, layer %.2f +- %.2f mm, %.0f ns per cell "
+            "and step; per step %.2f solves, %.2f Newton per solve, %.2f CG per Newton, %.1f temperature CG; "
+            "shares:%s\n",
+            m == 0 ? "explicit" : "semi-implicit", verify::median(walls), steps, s.at("angle_mean_deg"), s.at("angle_std_deg"),
+            1e3 * s.at("layer_mean"), 1e3 * s.at("layer_std"), ns, per_step, newton, krylov, temperature, shares.c_str());
     }
     std::printf("wall ratio explicit / semi-implicit (medians): %.2f\n",
                 verify::median(modes[0].first) / verify::median(modes[1].first));
@@ -143,11 +153,14 @@ int main(int argc, char** argv) {
         flow.push_back(run_timed(kFlowScene, dir + "/tumbler_flow"));
         flow_explicit.push_back(run_timed(explicit_flow, dir + "/tumbler_flow_explicit"));
         coupled.push_back(run_timed(kCoupledScene, dir + "/tumbler"));
-        times.row({{"run", static_cast<double>(run)}, {"flow_seconds", flow.back()},
-                    {"coupled_seconds", coupled.back()}, {"flow_explicit_seconds", flow_explicit.back()}});
-        std::printf("run %d: tumbler-flow %.1f s (explicit %.1f s), tumbler %.1f s wall on %d threads (load average before: %s, after: %s)\n",
-                    run, flow.back(), flow_explicit.back(), coupled.back(), threads, before.c_str(),
-                    verify::load_average().c_str());
+        times.row({{"run", static_cast<double>(run)},
+                   {"flow_seconds", flow.back()},
+                   {"coupled_seconds", coupled.back()},
+                   {"flow_explicit_seconds", flow_explicit.back()}});
+        std::printf(
+            "run %d: tumbler-flow %.1f s (explicit %.1f s), tumbler %.1f s wall on %d threads (load average before: %s, after: "
+            "%s)\n",
+            run, flow.back(), flow_explicit.back(), coupled.back(), threads, before.c_str(), verify::load_average().c_str());
         std::fflush(stdout);
     }
     times.comment("100 cells per diameter, 25 s, " + std::to_string(threads) + " threads; medians: tumbler-flow " +
@@ -164,7 +177,8 @@ int main(int argc, char** argv) {
     t.note("median wall time of " + std::to_string(kRuns) + " runs: tumbler-flow " + verify::format(verify::median(flow)) +
            " s, tumbler " + verify::format(verify::median(coupled)) + " s");
     t.at_most("wall time tumbler / tumbler-flow (medians)", ratio, kRatio);
-    const auto on = verify::last_row(dir + "/tumbler/summary.dat"), off = verify::last_row(dir + "/tumbler_no_feedback/summary.dat");
+    const auto on = verify::last_row(dir + "/tumbler/summary.dat"),
+               off = verify::last_row(dir + "/tumbler_no_feedback/summary.dat");
     const double cell_steps = on.at("steps") * on.at("inside_cells");
     t.note("coupling cost in the last coupled run: bulk transport " + verify::format(1e9 * on.at("seconds_bulk") / cell_steps) +
            " ns, segregation sub-steps " + verify::format(1e9 * on.at("seconds_segregation") / cell_steps) +
@@ -175,20 +189,32 @@ int main(int argc, char** argv) {
 
     const auto kinematic = verify::last_row(dir + "/tumbler_kinematic/tumbler_metrics.dat");
     DataTable pattern;
-    pattern.comment("pattern metrics after 25 s (pattern_metrics.hpp): drum 0 = coupled (tumbler), 1 = coupled without "
-                    "packing feedback, 2 = kinematic (tumbler-kinematic)");
-    pattern.row({{"drum", 0}, {"segregation_index", on.at("segregation_index")}, {"ring", on.at("ring")},
-                  {"periphery", on.at("periphery")}, {"core", on.at("core")}});
-    pattern.row({{"drum", 1}, {"segregation_index", off.at("segregation_index")}, {"ring", off.at("ring")},
-                  {"periphery", off.at("periphery")}, {"core", off.at("core")}});
-    pattern.row({{"drum", 2}, {"segregation_index", kinematic.at("index")}, {"ring", kinematic.at("ring")},
-                  {"periphery", kinematic.at("periphery")}, {"core", kinematic.at("core")}});
+    pattern.comment(
+        "pattern metrics after 25 s (pattern_metrics.hpp): drum 0 = coupled (tumbler), 1 = coupled without "
+        "packing feedback, 2 = kinematic (tumbler-kinematic)");
+    pattern.row({{"drum", 0},
+                 {"segregation_index", on.at("segregation_index")},
+                 {"ring", on.at("ring")},
+                 {"periphery", on.at("periphery")},
+                 {"core", on.at("core")}});
+    pattern.row({{"drum", 1},
+                 {"segregation_index", off.at("segregation_index")},
+                 {"ring", off.at("ring")},
+                 {"periphery", off.at("periphery")},
+                 {"core", off.at("core")}});
+    pattern.row({{"drum", 2},
+                 {"segregation_index", kinematic.at("index")},
+                 {"ring", kinematic.at("ring")},
+                 {"periphery", kinematic.at("periphery")},
+                 {"core", kinematic.at("core")}});
     verify::write_data(options, "bench_tumbler_pattern.dat", pattern);
     for (const auto& [label, m] : {std::pair{"coupled", on}, std::pair{"coupled, no packing feedback", off}})
         t.note("d. " + std::string(label) + ": index " + verify::format(m.at("segregation_index")) + ", ring " +
-               verify::format(m.at("ring")) + ", periphery " + verify::format(m.at("periphery")) + ", core " + verify::format(m.at("core")));
-    t.note("d. kinematic drum: index " + verify::format(kinematic.at("index")) + ", ring " + verify::format(kinematic.at("ring")) +
-           ", periphery " + verify::format(kinematic.at("periphery")) + ", core " + verify::format(kinematic.at("core")));
+               verify::format(m.at("ring")) + ", periphery " + verify::format(m.at("periphery")) + ", core " +
+               verify::format(m.at("core")));
+    t.note("d. kinematic drum: index " + verify::format(kinematic.at("index")) + ", ring " +
+           verify::format(kinematic.at("ring")) + ", periphery " + verify::format(kinematic.at("periphery")) + ", core " +
+           verify::format(kinematic.at("core")));
     t.at_least("d. small-particle fraction of the ring", on.at("ring"), kRingAtLeast);
     t.at_most("d. small-particle fraction of the periphery", on.at("periphery"), kPeripheryAtMost);
     t.at_least("d. segregation index", on.at("segregation_index"), kIndexAtLeast);

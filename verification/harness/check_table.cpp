@@ -23,18 +23,17 @@ std::string format(double v) {
 
 CheckTable::CheckTable(const std::string& title, std::ostream& out) : out_(out), title_(title) {
     out_ << "== " << title_ << " ==\n"
-         << pad("check", kCheckWidth) << " | " << pad("measured", kNumberWidth) << " | "
-         << pad("expected", kNumberWidth) << " | " << pad("tolerance", kNumberWidth) << " | PASS/FAIL\n"
+         << pad("check", kCheckWidth) << " | " << pad("measured", kNumberWidth) << " | " << pad("expected", kNumberWidth) << " | "
+         << pad("tolerance", kNumberWidth) << " | PASS/FAIL\n"
          << std::string(kCheckWidth + 3 * (kNumberWidth + 3) + 12, '-') << '\n';
 }
 
 CheckTable::CheckTable(const std::string& title) : CheckTable(title, std::cout) {}
 
-bool CheckTable::record(const std::string& check, const std::string& measured,
-                        const std::string& expected, const std::string& tolerance, bool ok) {
-    out_ << pad(check, kCheckWidth) << " | " << pad(measured, kNumberWidth) << " | "
-         << pad(expected, kNumberWidth) << " | " << pad(tolerance, kNumberWidth) << " | "
-         << (ok ? "PASS" : "FAIL") << '\n';
+bool CheckTable::record(const std::string& check, const std::string& measured, const std::string& expected,
+                        const std::string& tolerance, bool ok) {
+    out_ << pad(check, kCheckWidth) << " | " << pad(measured, kNumberWidth) << " | " << pad(expected, kNumberWidth) << " | "
+         << pad(tolerance, kNumberWidth) << " | " << (ok ? "PASS" : "FAIL") << '\n';
     (ok ? passed_ : failed_) += 1;
     return ok;
 }
@@ -44,8 +43,7 @@ bool CheckTable::near(const std::string& check, double measured, double expected
     return record(check, format(measured), format(expected), format(tolerance), ok);
 }
 
-bool CheckTable::near_relative(const std::string& check, double measured, double expected,
-                               double tolerance) {
+bool CheckTable::near_relative(const std::string& check, double measured, double expected, double tolerance) {
     const bool ok = std::isfinite(measured) && std::fabs(measured - expected) <= tolerance * std::fabs(expected);
     return record(check, format(measured), format(expected), "rel " + format(tolerance), ok);
 }

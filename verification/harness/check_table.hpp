@@ -40,8 +40,8 @@ public:
     int finish();
 
 private:
-    bool record(const std::string& check, const std::string& measured, const std::string& expected,
-                const std::string& tolerance, bool ok);
+    bool record(const std::string& check, const std::string& measured, const std::string& expected, const std::string& tolerance,
+                bool ok);
     std::ostream& out_;
     std::string title_;
     int passed_ = 0;

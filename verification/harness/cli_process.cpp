@@ -13,7 +13,6 @@ namespace granseg::verify {
 
 namespace fs = std::filesystem;
 
-
 long line_count(const std::string& text) {
     long n = 0;
     for (char c : text) n += c == '\n';
@@ -28,8 +27,8 @@ Outcome Cli::run(const std::string& arguments, const std::string& environment, d
                  const std::function<bool()>& since) const {
     const fs::path out = work_ / "stdout.txt", err = work_ / "stderr.txt";
     // exec: the shell becomes env, env becomes granseg, so the signal reaches the CLI itself.
-    const std::string command = "exec env " + environment + " '" + binary_.string() + "' " + arguments + " > '" +
-                                out.string() + "' 2> '" + err.string() + "' < /dev/null";
+    const std::string command = "exec env " + environment + " '" + binary_.string() + "' " + arguments + " > '" + out.string() +
+                                "' 2> '" + err.string() + "' < /dev/null";
     const pid_t child = fork();
     if (child == 0) {
         execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));

@@ -28,8 +28,8 @@ public:
     /// Runs `granseg ARGUMENTS` (words as a shell splits them), with the variables `environment`
     /// ("OMP_NUM_THREADS=2 ...") set, and waits for it; sends it `signal` once `seconds` have passed
     /// since it started, or since `since()` first held (polled every 2 ms).
-    Outcome run(const std::string& arguments, const std::string& environment = "", double seconds = INFINITY,
-                int signal = 0, const std::function<bool()>& since = {}) const;
+    Outcome run(const std::string& arguments, const std::string& environment = "", double seconds = INFINITY, int signal = 0,
+                const std::function<bool()>& since = {}) const;
 
 private:
     std::filesystem::path binary_, work_;

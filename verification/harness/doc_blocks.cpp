@@ -168,9 +168,8 @@ Run run_block(const Block& b, const fs::path& scratch, int timeout_seconds) {
     }
     // One OpenMP thread: make verify runs the verification programs side by side, and a threaded
     // run on a busy machine waits for its threads far longer than it computes.
-    const std::string command = "cd '" + scratch.string() + "' && OMP_NUM_THREADS=1 timeout " +
-                                std::to_string(timeout_seconds) + " sh -e '" + script.string() + "' > '" +
-                                output.string() + "' 2>&1 < /dev/null";
+    const std::string command = "cd '" + scratch.string() + "' && OMP_NUM_THREADS=1 timeout " + std::to_string(timeout_seconds) +
+                                " sh -e '" + script.string() + "' > '" + output.string() + "' 2>&1 < /dev/null";
     const int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_lines(output)};
 }

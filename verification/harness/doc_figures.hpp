@@ -20,8 +20,8 @@ namespace granseg::verify::docs {
 
 /// The fingerprint of figure `name` (16 hexadecimal digits), or "" with `error` set when its
 /// script, its `# reads:` line or a data file is missing.
-std::string figure_fingerprint(const std::filesystem::path& root, const std::string& name,
-                               const std::filesystem::path& data_dir, std::string& error);
+std::string figure_fingerprint(const std::filesystem::path& root, const std::string& name, const std::filesystem::path& data_dir,
+                               std::string& error);
 
 /// The data files figure `name` reads (its `# reads:` line; empty if none).
 std::vector<std::string> figure_reads(const std::filesystem::path& root, const std::string& name);

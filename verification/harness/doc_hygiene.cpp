@@ -30,7 +30,7 @@ std::vector<NamedPattern> history_list() {
     p.push_back({"date", Pattern("\\b" + kMonths + " \\d{4}\\b")});
     p.push_back({"date", Pattern(R"(\b\d{4}-\d{2}-\d{2}\b)")});
     p.push_back({"date", Pattern(R"(\b(today|yesterday)\b)", true)});
-        // A hexadecimal word with a digit and a letter other than e (1.046400526e-05 is a number).
+    // A hexadecimal word with a digit and a letter other than e (1.046400526e-05 is a number).
     p.push_back({"commit hash", Pattern(R"(\b(?=[0-9a-f]*[a-df])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b)")});
     p.push_back({"machine", Pattern(R"(\b(Xeon|EPYC|Epyc|Intel|AMD|Ryzen|Graviton|vCPUs?|microVM)\b)")});
     p.push_back({"machine", Pattern(R"(\b(this|the project|an idle|the idle|a shared|the shared|today's) machine\b)", true)});
@@ -83,8 +83,10 @@ std::string anchor_of(const std::string& heading) {
             i += 2;  // en and em dashes, typographic quotes: punctuation
             continue;
         }
-        if (c >= 0x80 || std::isalnum(c) || c == '_' || c == '-') out += static_cast<char>(std::tolower(c));
-        else if (c == ' ') out += '-';
+        if (c >= 0x80 || std::isalnum(c) || c == '_' || c == '-')
+            out += static_cast<char>(std::tolower(c));
+        else if (c == ' ')
+            out += '-';
     }
     return out;
 }
@@ -127,9 +129,12 @@ std::vector<Finding> broken_links(const std::string& text, const fs::path& page_
             const fs::path resolved = file.empty() ? fs::path() : fs::weakly_canonical(page_dir / file);
             const std::string rel = file.empty() ? "" : resolved.lexically_relative(root).generic_string();
             std::string problem;
-            if (!file.empty() && (rel.empty() || rel.rfind("..", 0) == 0)) problem = "outside the repository";
-            else if (!file.empty() && rel.rfind("build/", 0) == 0) problem = "into build/, which a fresh clone does not have";
-            else if (!file.empty() && !fs::exists(resolved)) problem = "no such file";
+            if (!file.empty() && (rel.empty() || rel.rfind("..", 0) == 0))
+                problem = "outside the repository";
+            else if (!file.empty() && rel.rfind("build/", 0) == 0)
+                problem = "into build/, which a fresh clone does not have";
+            else if (!file.empty() && !fs::exists(resolved))
+                problem = "no such file";
             else if (!anchor.empty()) {
                 const std::string page = file.empty() ? text : read_text(resolved);
                 if (!anchors_of(page).count(anchor)) problem = "no heading with this anchor";

@@ -77,8 +77,7 @@ bool known_path(std::string p, const std::string& page, const TreeNames& tree) {
 bool known_word(const std::string& w, const TreeNames& tree) {
     if (tree.words.count(w)) return true;
     for (std::size_t u = w.find('_'); u != std::string::npos && u + 1 < w.size(); u = w.find('_', u + 1))
-        if (tree.text.find('"' + w.substr(0, u + 1) + '"') != std::string::npos && tree.words.count(w.substr(u + 1)))
-            return true;
+        if (tree.text.find('"' + w.substr(0, u + 1) + '"') != std::string::npos && tree.words.count(w.substr(u + 1))) return true;
     return false;
 }
 

@@ -45,7 +45,8 @@ const Pattern& decimal_pattern() {
     return p;
 }
 const Pattern& count_pattern() {
-    static const Pattern p(R"((^|[^\w.,^])(\d+(?:,\d{3})* ?(?:%|CPU-hours?|CPU-s|seconds?|minutes?|min|hours?|s|sub-steps|steps|iterations|V-cycles|cycles))(?![\w/-]))");
+    static const Pattern p(
+        R"((^|[^\w.,^])(\d+(?:,\d{3})* ?(?:%|CPU-hours?|CPU-s|seconds?|minutes?|min|hours?|s|sub-steps|steps|iterations|V-cycles|cycles))(?![\w/-]))");
     return p;
 }
 
@@ -99,8 +100,10 @@ std::string prose_of(const std::string& page) {
         // Indented code: four blanks or a tab after a blank line or after indented code.
         const bool code_indent = line.rfind("    ", 0) == 0 || line.rfind("\t", 0) == 0;
         indented = !fenced && code_indent && (indented || i == 0 || blank(lines[i - 1])) && !blank(line);
-        if (fence || fenced || generated || generated_marker || indented) blank_range(line, 0, line.size());
-        else blank_inline(line);
+        if (fence || fenced || generated || generated_marker || indented)
+            blank_range(line, 0, line.size());
+        else
+            blank_inline(line);
     }
     std::string out;
     for (const std::string& line : lines) out += line + "\n";

@@ -48,8 +48,9 @@ std::optional<double> nth_number(const std::string& text, int n, std::string& er
 std::optional<double> text_value(const ValueSource& s, const std::string& file_text, std::string& error) {
     const std::vector<std::string> lines = lines_of(file_text);
     int seen = 0;
-    const auto hit = std::find_if(lines.begin(), lines.end(),
-                                  [&](const std::string& l) { return l.find(s.match) != std::string::npos && ++seen == s.occurrence; });
+    const auto hit = std::find_if(lines.begin(), lines.end(), [&](const std::string& l) {
+        return l.find(s.match) != std::string::npos && ++seen == s.occurrence;
+    });
     if (hit == lines.end()) {
         error = "no line " + std::to_string(s.occurrence) + " containing \"" + s.match + "\"";
         return std::nullopt;
@@ -62,7 +63,8 @@ std::optional<double> text_value(const ValueSource& s, const std::string& file_t
     // The header equal to COLUMN, else the first that contains it.
     auto column = std::find(names.begin(), names.end(), s.column);
     if (column == names.end())
-        column = std::find_if(names.begin(), names.end(), [&](const std::string& c) { return c.find(s.column) != std::string::npos; });
+        column =
+            std::find_if(names.begin(), names.end(), [&](const std::string& c) { return c.find(s.column) != std::string::npos; });
     if (trimmed(*hit).rfind('|', 0) != 0 || column == names.end()) {
         error = "no table column \"" + s.column + "\" for the line containing \"" + s.match + "\"";
         return std::nullopt;
@@ -100,7 +102,8 @@ std::optional<double> data_value(const ValueSource& s, const std::string& file_t
         return std::nullopt;
     }
     const std::vector<double>* row = nullptr;
-    if (s.row == "last" && !rows.empty()) row = &rows.back();
+    if (s.row == "last" && !rows.empty())
+        row = &rows.back();
     else if (const auto eq = s.row.find('='); eq != std::string::npos) {
         const long k = column_of(s.row.substr(0, eq));
         const double want = std::strtod(s.row.c_str() + eq + 1, nullptr);
@@ -133,7 +136,8 @@ std::vector<ValueSpan> value_spans(const std::string& page, std::string& error) 
         if (line_end == std::string::npos) line_end = page.size();
         const std::string line = page.substr(line_start, line_end - line_start);
         if (line.rfind("```", 0) == 0) fenced = !fenced;
-        for (std::size_t at = fenced ? std::string::npos : line.find(kOpen); at != std::string::npos; at = line.find(kOpen, at + 1)) {
+        for (std::size_t at = fenced ? std::string::npos : line.find(kOpen); at != std::string::npos;
+             at = line.find(kOpen, at + 1)) {
             const std::size_t source_end = line.find(kOpenEnd, at + kOpen.size());
             const std::size_t close = source_end == std::string::npos ? source_end : line.find(kClose, source_end);
             const std::string where = "line " + std::to_string(number) + ": ";
@@ -146,7 +150,8 @@ std::vector<ValueSpan> value_spans(const std::string& page, std::string& error) 
             const std::size_t text_at = source_end + kOpenEnd.size();
             s.text = line.substr(text_at, close - text_at);
             s.line = number, s.offset = line_start + text_at;
-            if ((s.source.empty() || s.text.empty()) && error.empty()) error = where + "value span with an empty source or number";
+            if ((s.source.empty() || s.text.empty()) && error.empty())
+                error = where + "value span with an empty source or number";
             spans.push_back(s);
         }
         line_start = line_end + 1;
@@ -220,7 +225,8 @@ std::string rendered_like(double value, const std::string& like) {
         const bool negative = exponent[0] == '-';
         exponent.erase(0, 1);
         const std::string written = like.substr(e + 1);
-        const bool padded = written.find_first_of("0123456789") != std::string::npos && written[written.find_first_of("0123456789")] == '0';
+        const bool padded =
+            written.find_first_of("0123456789") != std::string::npos && written[written.find_first_of("0123456789")] == '0';
         while (!padded && exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
         out = mantissa + like[e] + (negative ? "-" : written[0] == '+' ? "+" : "") + exponent;
     } else {
@@ -283,7 +289,8 @@ std::optional<double> resolved(const std::string& source_text, const std::string
 
 }  // namespace
 
-std::vector<ResolvedSpan> resolved_spans(const std::string& page, const fs::path& root, const fs::path& build, std::string& error) {
+std::vector<ResolvedSpan> resolved_spans(const std::string& page, const fs::path& root, const fs::path& build,
+                                         std::string& error) {
     std::vector<ResolvedSpan> out;
     for (const ValueSpan& span : value_spans(page, error)) {
         ResolvedSpan r{span, std::nullopt, ""};

@@ -39,10 +39,10 @@ namespace granseg::verify::docs {
 
 /// A value span of a page.
 struct ValueSpan {
-    std::string source;       // as written after "value: "
-    std::string text;         // the number the page shows
-    int line = 0;             // 1-based line of the page
-    std::size_t offset = 0;   // of `text` in the page
+    std::string source;      // as written after "value: "
+    std::string text;        // the number the page shows
+    int line = 0;            // 1-based line of the page
+    std::size_t offset = 0;  // of `text` in the page
 };
 
 /// The value spans of a page's text (fenced blocks skipped); `error` names the first malformed
@@ -58,7 +58,7 @@ struct ValueSource {
     int number = 1;      // which number of the line or cell; negative from the end
     int occurrence = 1;  // text sources: which line containing `match` ("MATCH"~2: the second)
     double scale = 1.0;
-    bool data = false;   // FILE:COLUMN@ROW
+    bool data = false;  // FILE:COLUMN@ROW
 };
 
 /// Parses a span's source; `error` says what is wrong when it returns nothing.

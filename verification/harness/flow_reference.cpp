@@ -46,8 +46,8 @@ double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, do
     Eos eos{&m, T, Phi_rcp, Phi_co, p};
     double lo = 0.0, hi = Phi_rcp * (1.0 - 1e-12);
     gsl_function f{pressure_residual, &eos};
-    std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-        gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+    std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(gsl_root_fsolver_alloc(gsl_root_fsolver_brent),
+                                                                               gsl_root_fsolver_free);
     gsl_root_fsolver_set(solver.get(), &f, lo, hi);
     for (int it = 0; it < 300; ++it) {
         gsl_root_fsolver_iterate(solver.get());
@@ -58,14 +58,14 @@ double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, do
     return gsl_root_fsolver_root(solver.get());
 }
 
-std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g,
-                                        double mass, const std::vector<double>& z, double* surface) {
-    return lithostatic_profile(m, [T](double) { return T; }, Phi_rcp, Phi_co, g, mass, z, surface);
+std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g, double mass,
+                                        const std::vector<double>& z, double* surface) {
+    return lithostatic_profile(
+        m, [T](double) { return T; }, Phi_rcp, Phi_co, g, mass, z, surface);
 }
 
 std::vector<double> lithostatic_profile(const Material& m, const std::function<double(double)>& T_of_z, double Phi_rcp,
-                                        double Phi_co, double g, double mass, const std::vector<double>& z,
-                                        double* surface) {
+                                        double Phi_co, double g, double mass, const std::vector<double>& z, double* surface) {
     // The bottom carries the whole weight, p(0) = g mass; integrate dp/dz = -g Phi(p) upwards.
     HydrostaticColumn column{{&m, T_of_z(0.0), Phi_rcp, Phi_co, 0.0}, g, &T_of_z};
     gsl_odeiv2_system sys{column_rhs, nullptr, 1, &column};

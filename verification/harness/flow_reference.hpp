@@ -23,8 +23,8 @@ double Phi_of_pressure(const Material& m, double p, double T, double Phi_rcp, do
 /// with gsl_odeiv2 (RK8(9) Prince-Dormand, relative tolerance 1e-12) through the dense and the
 /// kinetic branch of p(Phi). Returns Phi at the heights z (increasing); the dense part ends where
 /// p falls to p(Phi_co), and `surface` receives the last z below that.
-std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g,
-                                        double mass, const std::vector<double>& z, double* surface = nullptr);
+std::vector<double> lithostatic_profile(const Material& m, double T, double Phi_rcp, double Phi_co, double g, double mass,
+                                        const std::vector<double>& z, double* surface = nullptr);
 /// The same with a temperature that varies with height, T(z).
 std::vector<double> lithostatic_profile(const Material& m, const std::function<double(double)>& T_of_z, double Phi_rcp,
                                         double Phi_co, double g, double mass, const std::vector<double>& z,

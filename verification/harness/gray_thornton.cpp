@@ -9,7 +9,7 @@ namespace granseg::verify {
 
 PiecewiseLinear homogeneous_batch(double psi0, double q, double t) {
     if (q * t >= 1.0) return {[psi0](double z) { return z < psi0 ? 1.0 : 0.0; }, {psi0}};
-    const double lower = q * psi0 * t;              // shock speed (F(1) - F(psi0))/(1 - psi0) = q psi0
+    const double lower = q * psi0 * t;                // shock speed (F(1) - F(psi0))/(1 - psi0) = q psi0
     const double upper = 1.0 - q * (1.0 - psi0) * t;  // shock speed (F(0) - F(psi0))/(0 - psi0) = -q (1 - psi0)
     return {[=](double z) { return z < lower ? 1.0 : z < upper ? psi0 : 0.0; }, {lower, upper}};
 }

@@ -53,7 +53,7 @@ double best_order(const std::vector<double>& x_h, const std::vector<double>& w, 
     const int k = static_cast<int>(std::min_element(S.begin(), S.end()) - S.begin());
     if (k == 0 || k == kScan || !(S[k] < S[k - 1] && S[k] < S[k + 1])) return p[k];
     struct Data {
-        const std::vector<double> *x_h, *w, *f;
+        const std::vector<double>*x_h, *w, *f;
     } data{&x_h, &w, &f};
     gsl_function F;
     F.function = [](double q, void* d) {
@@ -62,7 +62,7 @@ double best_order(const std::vector<double>& x_h, const std::vector<double>& w, 
     };
     F.params = &data;
     std::unique_ptr<gsl_min_fminimizer, decltype(&gsl_min_fminimizer_free)> m(gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent),
-                                                                             gsl_min_fminimizer_free);
+                                                                              gsl_min_fminimizer_free);
     gsl_min_fminimizer_set_with_values(m.get(), &F, p[k], S[k], p[k - 1], S[k - 1], p[k + 1], S[k + 1]);
     for (int i = 0; i < 200; ++i) {
         gsl_min_fminimizer_iterate(m.get());
@@ -99,12 +99,18 @@ bool sign_changes(const std::vector<double>& f) {
 
 std::string convergence_name(Convergence c) {
     switch (c) {
-        case Convergence::monotone: return "monotone";
-        case Convergence::oscillatory: return "oscillatory";
-        case Convergence::divergent: return "divergent";
-        case Convergence::within_noise: return "within noise";
-        case Convergence::two_grids: return "two grids";
-        case Convergence::undetermined: return "undetermined";
+        case Convergence::monotone:
+            return "monotone";
+        case Convergence::oscillatory:
+            return "oscillatory";
+        case Convergence::divergent:
+            return "divergent";
+        case Convergence::within_noise:
+            return "within noise";
+        case Convergence::two_grids:
+            return "two grids";
+        case Convergence::undetermined:
+            return "undetermined";
     }
     return "?";
 }

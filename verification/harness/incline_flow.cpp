@@ -26,9 +26,8 @@ InclineRun run_incline(const Material& m, const FlowSettings& settings, double t
     f.tilt = theta;
     FlowSolver solver(g, m, settings, f);
     const double T0 = steady_shear_temperature(m, kStart);
-    const std::vector<double> Phi =
-        lithostatic_bed(g, m, kInclineDepth, kInclineGravity * std::cos(theta), T0, m.packing.Phi_rcp(settings.phi_hat),
-                        m.packing.Phi_co(settings.phi_hat));
+    const std::vector<double> Phi = lithostatic_bed(g, m, kInclineDepth, kInclineGravity * std::cos(theta), T0,
+                                                    m.packing.Phi_rcp(settings.phi_hat), m.packing.Phi_co(settings.phi_hat));
     std::vector<double> ux(nz, 0.0), zero(nz, 0.0);
     for (int k = 0; k < nz; ++k) ux[k] = Phi[k] > 0.0 ? kStart * g.center(2, k) : 0.0;
     solver.set_state(Phi, {ux, zero, zero}, std::vector<double>(nz, T0));
@@ -96,8 +95,14 @@ InclineProfileErrors incline_profile_errors(const Material& m, const InclineRun&
     const double slope = mu * std::sqrt(T_bvp) / m.eta0;
     for (int k = 0; k < nz; ++k) {
         if (rows)
-            rows->row({{"nz", static_cast<double>(nz)}, {"z", r.z[k]}, {"Phi", r.Phi[k]}, {"Phi_bvp", Phi_bvp[k]},
-                       {"u_x", r.u[k]}, {"u_bvp", Phi_bvp[k] > 0 ? slope * r.z[k] : 0.0}, {"T", r.T[k]}, {"T_bvp", T_bvp}});
+            rows->row({{"nz", static_cast<double>(nz)},
+                       {"z", r.z[k]},
+                       {"Phi", r.Phi[k]},
+                       {"Phi_bvp", Phi_bvp[k]},
+                       {"u_x", r.u[k]},
+                       {"u_bvp", Phi_bvp[k] > 0 ? slope * r.z[k] : 0.0},
+                       {"T", r.T[k]},
+                       {"T_bvp", T_bvp}});
         if (!in_bed(m, r.Phi[k]) || r.z[k] + 1.5 * h > surface) continue;  // not the surface cell
         e.u = std::max(e.u, std::fabs(r.u[k] - slope * r.z[k]) / (slope * kInclineDepth));
         e.Phi = std::max(e.Phi, std::fabs(r.Phi[k] - Phi_bvp[k]));

@@ -22,7 +22,7 @@ inline constexpr double kInclineDomain = 0.02, kInclineDepth = 0.01, kInclineGra
 inline constexpr double kInclineWindow[2] = {0.5, 1.5};
 
 struct InclineRun {
-    double kinetic[2] = {0.0, 0.0};  // at kInclineWindow[0], kInclineWindow[1] (or t_end if earlier)
+    double kinetic[2] = {0.0, 0.0};    // at kInclineWindow[0], kInclineWindow[1] (or t_end if earlier)
     std::vector<double> z, Phi, u, T;  // at t_end, per cell
     double T_max = 0.0;
     Timing time;  // of the solver's time loop
@@ -48,7 +48,6 @@ struct InclineProfileErrors {
 
 /// Compares the profiles of `r` (a run at theta_deg) with the boundary-value solution; appends
 /// rows (nz, z, Phi, Phi_bvp, u_x, u_bvp, T, T_bvp) and a gnuplot index break to `rows` if given.
-InclineProfileErrors incline_profile_errors(const Material& m, const InclineRun& r, double theta_deg,
-                                            DataTable* rows = nullptr);
+InclineProfileErrors incline_profile_errors(const Material& m, const InclineRun& r, double theta_deg, DataTable* rows = nullptr);
 
 }  // namespace granseg::verify

@@ -49,9 +49,18 @@ std::array<double, 5> source(const Material& m, const Frame& frame, double rcp, 
     };
     using F = std::function<double(double, double, double)>;
     const F Phi = [](double a, double b, double c) { return exact(a, b, c).Phi; };
-    const F mx = [](double a, double b, double c) { const State s = exact(a, b, c); return s.Phi * s.ux; };
-    const F mz = [](double a, double b, double c) { const State s = exact(a, b, c); return s.Phi * s.uz; };
-    const F E = [](double a, double b, double c) { const State s = exact(a, b, c); return s.Phi * s.T; };
+    const F mx = [](double a, double b, double c) {
+        const State s = exact(a, b, c);
+        return s.Phi * s.ux;
+    };
+    const F mz = [](double a, double b, double c) {
+        const State s = exact(a, b, c);
+        return s.Phi * s.uz;
+    };
+    const F E = [](double a, double b, double c) {
+        const State s = exact(a, b, c);
+        return s.Phi * s.T;
+    };
     const F ux = [](double a, double b, double c) { return exact(a, b, c).ux; };
     const F uz = [](double a, double b, double c) { return exact(a, b, c).uz; };
     const F T = [](double a, double b, double c) { return exact(a, b, c).T; };
@@ -68,11 +77,26 @@ std::array<double, 5> source(const Material& m, const Frame& frame, double rcp, 
     const State s = exact(x, z, t);
     const ClosureValues v = closures(x, z, t);
     const F p = [&](double a, double b, double c) { return closures(a, b, c).p; };
-    const F mxx = [](double a, double b, double c) { const State q = exact(a, b, c); return q.Phi * q.ux * q.ux; };
-    const F mxz = [](double a, double b, double c) { const State q = exact(a, b, c); return q.Phi * q.ux * q.uz; };
-    const F mzz = [](double a, double b, double c) { const State q = exact(a, b, c); return q.Phi * q.uz * q.uz; };
-    const F Ex = [](double a, double b, double c) { const State q = exact(a, b, c); return q.Phi * q.T * q.ux; };
-    const F Ez = [](double a, double b, double c) { const State q = exact(a, b, c); return q.Phi * q.T * q.uz; };
+    const F mxx = [](double a, double b, double c) {
+        const State q = exact(a, b, c);
+        return q.Phi * q.ux * q.ux;
+    };
+    const F mxz = [](double a, double b, double c) {
+        const State q = exact(a, b, c);
+        return q.Phi * q.ux * q.uz;
+    };
+    const F mzz = [](double a, double b, double c) {
+        const State q = exact(a, b, c);
+        return q.Phi * q.uz * q.uz;
+    };
+    const F Ex = [](double a, double b, double c) {
+        const State q = exact(a, b, c);
+        return q.Phi * q.T * q.ux;
+    };
+    const F Ez = [](double a, double b, double c) {
+        const State q = exact(a, b, c);
+        return q.Phi * q.T * q.uz;
+    };
     // Gravity in the frame turning counter-clockwise at Omega: the lab's (0, -|g|) turned by -Omega t
     // (written here, not taken from Frame, so that an error there shows).
     const double w = frame.omega, rx = x - frame.x_c, rz = z - frame.z_c;
@@ -114,14 +138,13 @@ ManufacturedFlow::ManufacturedFlow(const Material& m, int n)
 }
 
 ManufacturedRun ManufacturedFlow::run(const FlowSettings& s) const {
-    if (s.phi_hat != FlowSettings{}.phi_hat) throw InvariantError("ManufacturedFlow::run: the sources assume the default phi_hat");
+    if (s.phi_hat != FlowSettings{}.phi_hat)
+        throw InvariantError("ManufacturedFlow::run: the sources assume the default phi_hat");
     const Grid& g = grid_;
     const int n = n_;
     const std::size_t cells = g.cells();
     const double h_t = kTEnd / (kTimeNodes - 1);
-    auto index_of = [&](double x, double z) {
-        return g.index(static_cast<int>(x / g.h[0]), 0, static_cast<int>(z / g.h[2]));
-    };
+    auto index_of = [&](double x, double z) { return g.index(static_cast<int>(x / g.h[0]), 0, static_cast<int>(z / g.h[2])); };
     FlowSolver solver(g, m_, s, frame());
     solver.set_source([&](double t, double x, double, double z, double rates[5]) {
         const int j = std::min(kTimeNodes - 2, std::max(0, static_cast<int>(t / h_t)));
@@ -132,8 +155,7 @@ ManufacturedRun ManufacturedFlow::run(const FlowSettings& s) const {
         const auto& a = nodes_[(j + 1) * cells + c];
         const auto& b = nodes_[(j + 2) * cells + c];
         const auto& b1 = nodes_[(j + 3) * cells + c];
-        for (int q = 0; q < 5; ++q)
-            rates[q] = h00 * a[q] + h10 * 0.5 * (b[q] - a0[q]) + h01 * b[q] + h11 * 0.5 * (b1[q] - a[q]);
+        for (int q = 0; q < 5; ++q) rates[q] = h00 * a[q] + h10 * 0.5 * (b[q] - a0[q]) + h01 * b[q] + h11 * 0.5 * (b1[q] - a[q]);
     });
     std::vector<double> Phi(cells), T(cells), ux(cells), uy(cells, 0.0), uz(cells);
     for (int k = 0; k < n; ++k)

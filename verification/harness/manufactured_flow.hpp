@@ -33,7 +33,7 @@ inline constexpr double kManufacturedSide = 0.05, kManufacturedEnd = 0.05;
 struct ManufacturedRun {
     double error_Phi = 0.0, error_u = 0.0, error_T = 0.0;  // volume-averaged |numerical - exact| at t_end
     std::vector<double> Phi, u_x, u_z, T;                  // the numerical fields at t_end, per cell
-    Timing time;  // of the solver's time loop alone (the sources are set up before)
+    Timing time;                                           // of the solver's time loop alone (the sources are set up before)
     long steps = 0;
     FlowCounters work;  // the semi-implicit step's pressure solves, Newton steps, CG iterations
 };

@@ -40,8 +40,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
     if (a == b) return "";
     const std::vector<std::string> la = lines_of(a), lb = lines_of(b);
     if (la.size() != lb.size()) return std::to_string(la.size()) + " lines against " + std::to_string(lb.size());
-    const std::vector<std::string> columns = la.empty() || la[0].rfind("#", 0) != 0 ? std::vector<std::string>{}
-                                                                                   : words_of(la[0].substr(1));
+    const std::vector<std::string> columns =
+        la.empty() || la[0].rfind("#", 0) != 0 ? std::vector<std::string>{} : words_of(la[0].substr(1));
     for (std::size_t i = 0; i < la.size(); ++i) {
         if (la[i] == lb[i]) continue;
         const std::vector<std::string> wa = words_of(la[i]), wb = words_of(lb[i]);

@@ -42,8 +42,8 @@ std::string scheme_column(SegregationScheme scheme) {
     return name;
 }
 
-ColumnRun run_column(const Column& column, const std::vector<double>& phi0, const SegregationOptions& options,
-                     double t_end, bool monitor) {
+ColumnRun run_column(const Column& column, const std::vector<double>& phi0, const SegregationOptions& options, double t_end,
+                     bool monitor) {
     ColumnRun run;
     run.phi = phi0;
     run.max_excess = -INFINITY;
@@ -59,8 +59,7 @@ ColumnRun run_column(const Column& column, const std::vector<double>& phi0, cons
         }
     };
     const double start = cpu_seconds();
-    run.steps = monitor ? solver.advance(column.fields, t_end, run.phi, observe)
-                        : solver.advance(column.fields, t_end, run.phi);
+    run.steps = monitor ? solver.advance(column.fields, t_end, run.phi, observe) : solver.advance(column.fields, t_end, run.phi);
     run.seconds = cpu_seconds() - start;
     run.updates = solver.cell_updates();
     run.correction = solver.largest_correction();

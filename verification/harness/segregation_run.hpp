@@ -14,21 +14,21 @@
 namespace granseg::verify {
 
 struct ColumnRun {
-    std::vector<double> phi;   // at the end
-    double max_excess = 0.0;   // max over steps and cells of phi - Phi (monitored runs)
-    double min_phi = 0.0;      // min over steps and cells of phi (monitored runs)
-    long nonfinite = 0;        // non-finite values seen (monitored runs)
-    double correction = 0.0;   // largest clip of the solver's round-off guard (largest_correction)
-    double mass_drift = 0.0;   // |sum phi(end) - sum phi(0)| / sum phi(0)
+    std::vector<double> phi;  // at the end
+    double max_excess = 0.0;  // max over steps and cells of phi - Phi (monitored runs)
+    double min_phi = 0.0;     // min over steps and cells of phi (monitored runs)
+    long nonfinite = 0;       // non-finite values seen (monitored runs)
+    double correction = 0.0;  // largest clip of the solver's round-off guard (largest_correction)
+    double mass_drift = 0.0;  // |sum phi(end) - sum phi(0)| / sum phi(0)
     long steps = 0;
-    long long updates = 0;     // cell updates (one per cell and Runge-Kutta stage)
-    double seconds = 0.0;      // CPU time of the time loop (CLOCK_PROCESS_CPUTIME_ID)
+    long long updates = 0;  // cell updates (one per cell and Runge-Kutta stage)
+    double seconds = 0.0;   // CPU time of the time loop (CLOCK_PROCESS_CPUTIME_ID)
 };
 
 /// Runs `column` from phi0 to t_end with the given scheme options. With `monitor`, the bounds
 /// and finiteness are checked after every step (this costs time: the benchmark turns it off).
-ColumnRun run_column(const Column& column, const std::vector<double>& phi0, const SegregationOptions& options,
-                     double t_end, bool monitor = true);
+ColumnRun run_column(const Column& column, const std::vector<double>& phi0, const SegregationOptions& options, double t_end,
+                     bool monitor = true);
 
 /// Options with the given scheme and cfl (limiter: mc).
 SegregationOptions scheme_options(SegregationScheme scheme, double cfl = 0.9);

@@ -20,8 +20,8 @@ PatternMatch to_match(const std::smatch& m) {
 }  // namespace
 
 Pattern::Pattern(const std::string& expression, bool ignore_case)
-    : impl_(std::make_unique<Impl>(Impl{ignore_case ? std::regex(expression, std::regex::ECMAScript | std::regex::icase)
-                                                    : std::regex(expression)})) {}
+    : impl_(std::make_unique<Impl>(
+          Impl{ignore_case ? std::regex(expression, std::regex::ECMAScript | std::regex::icase) : std::regex(expression)})) {}
 Pattern::~Pattern() = default;
 Pattern::Pattern(Pattern&&) noexcept = default;
 Pattern& Pattern::operator=(Pattern&&) noexcept = default;

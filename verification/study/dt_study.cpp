@@ -26,7 +26,8 @@ std::string dt_cell(double v, int digits = 4) { return std::isfinite(v) ? fig7_n
 /// series, "< bound (condition)" where no limit is formed.
 std::string error_cell(const DtEstimate& d, int digits) {
     if (std::isfinite(d.error))
-        return fig7_number(d.error, digits) + (d.e.g.condition == Convergence::two_grids ? " (order 1 assumed)" : " (p " + dt_cell(d.e.g.p, 2) + ")");
+        return fig7_number(d.error, digits) +
+               (d.e.g.condition == Convergence::two_grids ? " (order 1 assumed)" : " (p " + dt_cell(d.e.g.p, 2) + ")");
     return "< " + dt_cell(d.bound, digits) + " (" + convergence_name(d.e.g.condition) + ")";
 }
 
@@ -61,8 +62,10 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
             for (bool feedback : o.feedback) {
                 std::vector<const Fig7Result*> series;  // smallest dt first (fine to coarse)
                 for (const Fig7Result& r : results)
-                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback) series.push_back(&r);
-                std::sort(series.begin(), series.end(), [](const Fig7Result* a, const Fig7Result* b) { return a->dt_mean < b->dt_mean; });
+                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback)
+                        series.push_back(&r);
+                std::sort(series.begin(), series.end(),
+                          [](const Fig7Result* a, const Fig7Result* b) { return a->dt_mean < b->dt_mean; });
                 if (series.size() < 2) continue;
                 for (int q : dt_study_quantities()) {
                     if (q == kContrast && !feedback) continue;  // without feedback Phi does not follow phi_hat
@@ -82,14 +85,21 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
 
 void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates, const DtStudyOptions& o) {
     DataTable runs;
-    runs.comment("bench_time_step: one row per run; transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
-                 "standard error of the mean over t >= " + fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " +
-                 fig7_number(o.run.jitter_window) + " s)");
+    runs.comment(
+        "bench_time_step: one row per run; transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
+        "standard error of the mean over t >= " +
+        fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " + fig7_number(o.run.jitter_window) +
+        " s)");
     for (const Fig7Result& r : results) {
         TableRow row{{"feedback", r.run.packing_feedback ? 1.0 : 0.0},
                      {"transport", static_cast<double>(transport_code(r.run.transport))},
-                     {"cells", static_cast<double>(r.run.cells)}, {"dt_max", r.run.dt_max}, {"dt_mean", r.dt_mean},
-                     {"dt_max_share", r.dt_max_share}, {"steps", r.steps}, {"wall_seconds", r.wall}, {"cpu_seconds", r.cpu}};
+                     {"cells", static_cast<double>(r.run.cells)},
+                     {"dt_max", r.run.dt_max},
+                     {"dt_mean", r.dt_mean},
+                     {"dt_max_share", r.dt_max_share},
+                     {"steps", r.steps},
+                     {"wall_seconds", r.wall},
+                     {"cpu_seconds", r.cpu}};
         for (int q : dt_study_quantities()) {
             const std::string name = fig7_quantities()[q].name;
             row.add(q == kLayer ? "layer_mm" : name, r.value[q]).add(name + "_se", r.sampling[q]);
@@ -99,16 +109,21 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
     write_file_atomically(o.run.data_dir + "/time_step_runs.dat", runs.str());
 
     DataTable points;
-    points.comment("bench_time_step: per series (feedback, transport 0 muscl / 1 donor-cell, cells) and quantity (index into "
-                   "fig7_quantities: 0 angle, 1 layer, 2 index, 3 ring, 5 core, 6 contrast, 7 axis) the runs' values against "
-                   "their mean time step, with the fit's limit f0 and order p (NaN where none); one gnuplot block per series");
+    points.comment(
+        "bench_time_step: per series (feedback, transport 0 muscl / 1 donor-cell, cells) and quantity (index into "
+        "fig7_quantities: 0 angle, 1 layer, 2 index, 3 ring, 5 core, 6 contrast, 7 axis) the runs' values against "
+        "their mean time step, with the fit's limit f0 and order p (NaN where none); one gnuplot block per series");
     for (const DtEstimate& d : estimates) {
         for (std::size_t i = 0; i < d.e.h.size(); ++i)
             points.row({{"feedback", d.feedback ? 1.0 : 0.0},
-                         {"transport", static_cast<double>(transport_code(d.transport))},
-                         {"cells", static_cast<double>(d.cells)}, {"quantity", static_cast<double>(d.e.quantity)},
-                         {"dt_mean", d.e.h[i]}, {"value", d.e.f[i]}, {"se", d.e.se[i]}, {"f0", d.e.g.f0},
-                         {"p", d.e.g.p}});
+                        {"transport", static_cast<double>(transport_code(d.transport))},
+                        {"cells", static_cast<double>(d.cells)},
+                        {"quantity", static_cast<double>(d.e.quantity)},
+                        {"dt_mean", d.e.h[i]},
+                        {"value", d.e.f[i]},
+                        {"se", d.e.se[i]},
+                        {"f0", d.e.g.f0},
+                        {"p", d.e.g.p}});
         points.blank(), points.blank();  // a gnuplot block per series
     }
     write_file_atomically(o.run.data_dir + "/time_step.dat", points.str());
@@ -121,10 +136,11 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
         const Fig7Quantity& q = fig7_quantities()[d.e.quantity];
         const int digits = d.e.quantity == kAngle ? 4 : 3;
         std::string values;
-        for (auto it = d.e.f.rbegin(); it != d.e.f.rend(); ++it) values += (values.empty() ? "" : ", ") + dt_cell(*it, digits + 1);
-        md << "| " << part_name(d.feedback) << " | " << d.transport << " | " << d.cells << " | " << q.name << " (" << q.unit << ") | "
-           << values << " | " << dt_cell(d.e.se_max, 2) << " | " << convergence_name(d.e.g.condition) << " | " << dt_cell(d.e.g.f0, digits + 1)
-           << " | " << error_cell(d, 2) << " |\n";
+        for (auto it = d.e.f.rbegin(); it != d.e.f.rend(); ++it)
+            values += (values.empty() ? "" : ", ") + dt_cell(*it, digits + 1);
+        md << "| " << part_name(d.feedback) << " | " << d.transport << " | " << d.cells << " | " << q.name << " (" << q.unit
+           << ") | " << values << " | " << dt_cell(d.e.se_max, 2) << " | " << convergence_name(d.e.g.condition) << " | "
+           << dt_cell(d.e.g.f0, digits + 1) << " | " << error_cell(d, 2) << " |\n";
     }
     std::string dts;
     for (const DtGrid& g : o.grids) {
@@ -132,8 +148,8 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
         for (double dt : g.dt_max) list += (list.empty() ? "" : ", ") + fig7_number(1e3 * dt);
         dts += (dts.empty() ? "" : "; ") + std::to_string(g.cells) + " cells: " + list + " ms";
     }
-    md << "\ndt_max " << dts << "; t_end " << fig7_number(o.run.t_end) << " s, averages over t >= " << fig7_number(o.run.average_from)
-       << " s. Written by bench_time_step.\n";
+    md << "\ndt_max " << dts << "; t_end " << fig7_number(o.run.t_end)
+       << " s, averages over t >= " << fig7_number(o.run.average_from) << " s. Written by bench_time_step.\n";
     write_file_atomically(o.run.data_dir + "/time_step.md", md.str());
 }
 

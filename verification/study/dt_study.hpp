@@ -46,10 +46,10 @@ struct DtEstimate {
     bool feedback = false;
     std::string transport;
     int cells = 0;
-    Fig7Estimate e;           // fine to coarse: mean time step, value, sampling error; the fit
-    double at_default = 0;    // the value at the largest dt_max
-    double error = 0;         // its time error: value - f0 (monotone, two runs), else NaN
-    double bound = 0;         // |error|, or where no limit is formed the range of the values
+    Fig7Estimate e;         // fine to coarse: mean time step, value, sampling error; the fit
+    double at_default = 0;  // the value at the largest dt_max
+    double error = 0;       // its time error: value - f0 (monotone, two runs), else NaN
+    double bound = 0;       // |error|, or where no limit is formed the range of the values
 };
 
 /// The estimates of every quantity of every series (results in plan order).

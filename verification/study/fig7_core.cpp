@@ -20,7 +20,6 @@ constexpr double kContrastSpreads = 2.0;
 // j. "Mainly untouched": more than half of the core's material is still there at t_end.
 constexpr double kMainly = 0.5;
 
-
 // dt_max "binds" on a run when it set at least this share of the steps: the others are the first
 // steps' growth from the sound-speed step (kStepGrowth per step) and the last step to t_end.
 constexpr double kBinding = 0.99;
@@ -42,16 +41,17 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
     checks << "| check | measured | bound | result |\n|---|---|---|---|\n";
     const auto check = [&](const std::string& what, double measured, double bound, bool at_least) {
         const bool ok = at_least ? t.at_least(what, measured, bound) : t.at_most(what, measured, bound);
-        checks << "| " << what << " | " << fig7_number(measured, 4) << " | " << (at_least ? ">= " : "<= ") << fig7_number(bound, 4)
-               << " | " << (ok ? "PASS" : "FAIL") << " |\n";
+        checks << "| " << what << " | " << fig7_number(measured, 4) << " | " << (at_least ? ">= " : "<= ")
+               << fig7_number(bound, 4) << " | " << (ok ? "PASS" : "FAIL") << " |\n";
     };
     // The time step refines with the grid only where dt_max sets the steps (fig7_study.hpp).
     const Fig7Result* loosest = &a.loosest_run();
-    check("f. dt ~ h: share of steps set by dt_max, lowest run (" + loosest->run.name + ")", loosest->dt_max_share, kBinding, true);
+    check("f. dt ~ h: share of steps set by dt_max, lowest run (" + loosest->run.name + ")", loosest->dt_max_share, kBinding,
+          true);
     check("g. ring of small particles: ring - band >= mixture", fine.value[kRing] - a.band(kRing), m0, true);
     check("h. large particles at the wall: periphery + band <= mixture", fine.value[kPeriphery] + a.band(kPeriphery), m0, false);
-    check("i. Fig. 7d: (contrast - band) / spread", (fine.value[kContrast] - a.band(kContrast)) / fine.packing_spread, kContrastSpreads,
-          true);
+    check("i. Fig. 7d: (contrast - band) / spread", (fine.value[kContrast] - a.band(kContrast)) / fine.packing_spread,
+          kContrastSpreads, true);
     std::ostringstream md;
     md << "| the core after " << fig7_number(o.t_end) << " s | value |\n|---|---|\n";
     const auto row = [&](const std::string& what, const std::string& value) { md << "| " << what << " | " << value << " |\n"; };
@@ -96,7 +96,8 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
         const double T_floor = fig7_scene_number("flow", "T_floor", FlowSettings{}.T_floor);
         const double g = fig7_scene_number("drum", "gravity", DrumSpec{}.gravity);
         const auto known = [&](bool ok, double v) { return ok ? fig7_number(v) : kNot; };
-        row("tracer (the full model's flow): share of the core's material at t_end that started there, finest grid", fig7_number(K1));
+        row("tracer (the full model's flow): share of the core's material at t_end that started there, finest grid",
+            fig7_number(K1));
         row("the same, h -> 0 (" + (tracer ? convergence_name(tracer->g.condition) : std::string("one grid")) + ")",
             known(K_known, K_ext) + " +- " + fig7_number(U_K, 3));
         row("material exchanged by the grid's numerical diffusion, K_ext - K(h1)", known(K_known, K_ext - K1));
@@ -112,7 +113,8 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
             known(P_known, 1.0 - P_lim));
         row("what the grid smears at the finest grid, P(h1) - K(h1)", known(smear_known, smear));
         row("T_floor " + fig7_number(o.T_floor_low) + " instead of the scene's at " + std::to_string(floor->run.cells) +
-                " cells: retained share (tracer)", fig7_number(floor->tracer));
+                " cells: retained share (tracer)",
+            fig7_number(floor->tracer));
         row("core share: discretisation part C(h1) - C_ext", known(C_known, discretisation));
         row("core share: the floor's part C - C(lower T_floor) at " + std::to_string(floor->run.cells) + " cells",
             known(floor_known, floor_part));
@@ -121,8 +123,8 @@ int check_fig7_statements(const Fig7Analysis& a, const Fig7Options& o) {
         row("largest reach of segregation at the floor, S0 sqrt(T_floor) g t_end (m; a cell: " + fig7_number(fine.h, 3) + " m)",
             fig7_number(S0 * std::sqrt(T_floor) * g * o.t_end, 3));
         t.note("j. core: C(h1) = " + fig7_number(C1) + " (initial " + fig7_number(m0) + "); material points " + fig7_number(P1) +
-               " +- " + fig7_number(U_P, 3) + "; tracer retained share " + fig7_number(K1) + " (h -> 0: " + known(K_known, K_ext) +
-               " +- " + fig7_number(U_K, 3) + "), at the lower floor " + fig7_number(floor->tracer));
+               " +- " + fig7_number(U_P, 3) + "; tracer retained share " + fig7_number(K1) + " (h -> 0: " +
+               known(K_known, K_ext) + " +- " + fig7_number(U_K, 3) + "), at the lower floor " + fig7_number(floor->tracer));
         t.note("j. core change: discretisation " + known(C_known, discretisation) + ", floor " + known(floor_known, floor_part) +
                ", remainder " + known(C_known, remainder) + " (not attributed)");
     }

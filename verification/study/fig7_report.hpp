@@ -12,8 +12,8 @@
 //   tracer       the passive tracer's core share (the core quantity only) against h
 #pragma once
 
-#include "study/fig7_study.hpp"
 #include "harness/grid_convergence.hpp"
+#include "study/fig7_study.hpp"
 
 #include <string>
 #include <utility>
@@ -31,7 +31,7 @@ struct Fig7Estimate {
     std::string series;
     std::vector<double> h, f, se;  // fine to coarse: cell size (m) or mean time step (s), value, sampling error
     GridConvergence g;
-    double se_max = 0;             // largest sampling error of the runs used
+    double se_max = 0;  // largest sampling error of the runs used
 };
 
 struct Fig7Analysis {

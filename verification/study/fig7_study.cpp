@@ -52,8 +52,10 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     r.insert_or_assign("t_end", o.t_end), r.insert_or_assign("angle_from", o.average_from);
     r.insert_or_assign("frames", 0), r.insert_or_assign("vtk", false);
     toml::table& flow = section("flow");
-    if (run.explicit_steps) flow.insert_or_assign("time_stepping", "explicit");
-    else flow.insert_or_assign("transport", run.transport);
+    if (run.explicit_steps)
+        flow.insert_or_assign("time_stepping", "explicit");
+    else
+        flow.insert_or_assign("transport", run.transport);
     flow.insert_or_assign("dt_max", run.dt_max);
     if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (!run.packing_feedback) section("coupling").insert_or_assign("packing_feedback", false);
@@ -74,7 +76,6 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     return text.str();
 }
 
-
 /// A dt factor in a run's name: 0.5 -> "0.5", 0.25 -> "0.25".
 std::string fig7_factor(double f) {
     char s[32];
@@ -93,7 +94,8 @@ const std::array<Fig7Quantity, kFig7Quantities>& fig7_quantities() {
         {"layer", "flowing-layer thickness", "mm", true, "layer_mean", "layer_thickness", 1e3, 0.0, kInf},
         {"index", "segregation index", "-", false, "segregation_index", "segregation_index", 1.0, 0.0, 1.0},
         {"ring", "ring (d - layer <= r < d), small-particle share", "-", false, "ring_layer", "ring_layer", 1.0, 0.0, 1.0},
-        {"periphery", "periphery (r >= 0.8 R), small-particle share", "-", false, "periphery_layer", "periphery_layer", 1.0, 0.0, 1.0},
+        {"periphery", "periphery (r >= 0.8 R), small-particle share", "-", false, "periphery_layer", "periphery_layer", 1.0, 0.0,
+         1.0},
         {"core", "core (r < d - layer), small-particle share", "-", false, "core_layer", "core_layer", 1.0, 0.0, 1.0},
         {"contrast", "Fig. 7d contrast (Phi mixed - pure)", "-", false, "packing_contrast", "packing_contrast", 1.0, -1.0, 1.0},
         {"axis", "small-particle share within 0.05 D of the axis", "-", false, "axis_layer", "axis_layer", 1.0, 0.0, 1.0},
@@ -108,7 +110,8 @@ double fig7_scene_number(const char* section, const char* key, double fallback) 
 std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
     std::vector<Fig7Run> runs;
     const std::string& first = o.transports.front();
-    const auto add = [&](const std::string& name, Fig7Kind kind, bool explicit_steps, int n, double factor, const std::string& transport) {
+    const auto add = [&](const std::string& name, Fig7Kind kind, bool explicit_steps, int n, double factor,
+                         const std::string& transport) {
         runs.push_back({name, kind, explicit_steps, n, factor, transport, o.dt_max(n, factor)});
     };
     for (const std::string& t : o.transports)
@@ -116,8 +119,10 @@ std::vector<Fig7Run> plan_fig7_runs(const Fig7Options& o) {
     for (int n : o.explicit_cells) add(cell_name("explicit", n), Fig7Kind::grid, true, n, 1.0, "");
     const int coarsest = o.cells.front(), finest = o.cells.back();
     if (o.dt_study) {
-        for (double f : o.dt_coarse) add(cell_name(first.c_str(), coarsest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, coarsest, f, first);
-        for (double f : o.dt_fine) add(cell_name(first.c_str(), finest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, finest, f, first);
+        for (double f : o.dt_coarse)
+            add(cell_name(first.c_str(), coarsest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, coarsest, f, first);
+        for (double f : o.dt_fine)
+            add(cell_name(first.c_str(), finest) + "_dt" + fig7_factor(f), Fig7Kind::dt, false, finest, f, first);
     }
     if (o.core_study) {
         for (int n : o.cells) add(cell_name("tracer", n), Fig7Kind::tracer, false, n, 1.0, first);
@@ -138,7 +143,8 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         write_file_atomically(scene_path, text);
         omp_set_num_threads(o.threads);
         // A finished run of this scene and build is only written out again, an interrupted one
-        // continues from its checkpoint, any other runs from t = 0 (docs/checkpoints.md): a killed study loses at most a checkpoint interval per run.
+        // continues from its checkpoint, any other runs from t = 0 (docs/checkpoints.md): a killed study loses at most a
+        // checkpoint interval per run.
         run_scene_file(scene_path, dir, Resume::if_compatible);
     }
     Fig7Result r;
@@ -163,7 +169,8 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
             const bool in_window = time_average ? ti >= o.average_from - 1e-9 : ti >= t_end - o.jitter_window - 1e-9;
             if (in_window && std::isfinite(vi)) t.push_back(ti), v.push_back(vi);
         }
-        return std::pair{scale * summary.at(s, summary_column), scale * (time_average ? batch_mean_error(v) : detrended_spread(t, v))};
+        return std::pair{scale * summary.at(s, summary_column),
+                         scale * (time_average ? batch_mean_error(v) : detrended_spread(t, v))};
     };
     for (int i = 0; i < kFig7Quantities; ++i) {
         const Fig7Quantity& q = fig7_quantities()[i];

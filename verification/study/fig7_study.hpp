@@ -39,18 +39,19 @@ struct Fig7Options {
     std::string data_dir = "build/bench-data";
     std::string study_dir = "fig7_convergence";  // the runs go to data_dir/study_dir/NAME
     std::vector<int> cells{50, 70, 100, 140};    // coarse to fine (even counts keep the axis on a vertex)
-    std::vector<std::string> transports{"muscl", "donor-cell"};  // [flow] transport of the grid series, the first is the reference
-    std::vector<int> explicit_cells{};           // explicit time stepping (none, two or more)
-    double dt_ref = 2e-3;                        // s, dt_max at kDtRefCells cells per diameter
-    std::vector<double> dt_coarse{0.5, 0.25};    // dt_max factors of the dt study at the coarsest grid
-    std::vector<double> dt_fine{0.5};            // and at the finest
+    std::vector<std::string> transports{"muscl",
+                                        "donor-cell"};  // [flow] transport of the grid series, the first is the reference
+    std::vector<int> explicit_cells{};                  // explicit time stepping (none, two or more)
+    double dt_ref = 2e-3;                               // s, dt_max at kDtRefCells cells per diameter
+    std::vector<double> dt_coarse{0.5, 0.25};           // dt_max factors of the dt study at the coarsest grid
+    std::vector<double> dt_fine{0.5};                   // and at the finest
     bool dt_study = true, core_study = true;
-    double t_end = 25.0, average_from = 10.0;    // s; the angle and layer are averaged over t >= average_from
-    double jitter_window = 2.5;                  // s before t_end over which a value at t_end jitters
-    double T_floor_low = 1e-14;                  // m^2/s^2, the floor run's T_floor
-    int threads = 1;                             // OpenMP threads of every run
-    int lanes = 0;                               // runs side by side (0: one per core; > 1 needs threads = 1)
-    bool reuse = false;                          // reuse a run whose scene text is unchanged
+    double t_end = 25.0, average_from = 10.0;        // s; the angle and layer are averaged over t >= average_from
+    double jitter_window = 2.5;                      // s before t_end over which a value at t_end jitters
+    double T_floor_low = 1e-14;                      // m^2/s^2, the floor run's T_floor
+    int threads = 1;                                 // OpenMP threads of every run
+    int lanes = 0;                                   // runs side by side (0: one per core; > 1 needs threads = 1)
+    bool reuse = false;                              // reuse a run whose scene text is unchanged
     std::string program = "bench_fig7_convergence";  // named in each run's scene file
 
     /// dt_max of a run at `cells` with the dt study's factor.
@@ -60,13 +61,13 @@ struct Fig7Options {
 enum class Fig7Kind { grid, dt, tracer, floor };
 
 struct Fig7Run {
-    std::string name;           // also its directory under DIR/fig7_convergence
+    std::string name;  // also its directory under DIR/fig7_convergence
     Fig7Kind kind = Fig7Kind::grid;
     bool explicit_steps = false;
     int cells = 0;
-    double dt_factor = 1.0;     // dt_max relative to the grid's (Fig7Options::dt_max)
-    std::string transport;      // [flow] transport ("" for the explicit time stepping)
-    double dt_max = 0;          // s
+    double dt_factor = 1.0;        // dt_max relative to the grid's (Fig7Options::dt_max)
+    std::string transport;         // [flow] transport ("" for the explicit time stepping)
+    double dt_max = 0;             // s
     bool packing_feedback = true;  // [coupling] packing_feedback
     double S = NAN;                // [segregation] S; NaN: the scene's
     double min_shear_rate = 0;     // [segregation] diagnostic_min_shear_rate, 1/s (0: off, the scene's)
@@ -81,7 +82,7 @@ struct Fig7Quantity {
     bool time_average;
     const char* summary_column;
     const char* history_column;
-    double scale;  // summary and history values times scale = the value in `unit`
+    double scale;         // summary and history values times scale = the value in `unit`
     double lower, upper;  // physical range (in `unit`): an extrapolation outside it is flagged
 };
 constexpr int kFig7Quantities = 8;

@@ -13,8 +13,8 @@ namespace {
 std::string series_name(const Fig7Result& r) { return r.run.explicit_steps ? std::string("explicit") : r.run.transport; }
 
 std::string run_text(const Fig7Result& r) {
-    return series_name(r) + ", " + std::to_string(r.run.cells) + " cells per diameter, dt_max " + fig7_number(1e3 * r.run.dt_max, 4) +
-           " ms";
+    return series_name(r) + ", " + std::to_string(r.run.cells) + " cells per diameter, dt_max " +
+           fig7_number(1e3 * r.run.dt_max, 4) + " ms";
 }
 
 /// An error and whether the reference's band resolves it ("<= band": it does not).
@@ -37,11 +37,16 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
     DataTable table;
     std::string refs;
     for (int q = 0; q < kFig7Quantities; ++q)
-        refs += std::string(q ? ", " : "") + quantities[q].name + " " + fig7_number(ref.value[q]) + " +- " + fig7_number(a.band(q), 3);
-    table.comment("bench_fig7_convergence: CPU time (s, all " + std::to_string(o.threads) + " threads) and wall time of each grid "
+        refs += std::string(q ? ", " : "") + quantities[q].name + " " + fig7_number(ref.value[q]) + " +- " +
+                fig7_number(a.band(q), 3);
+    table.comment("bench_fig7_convergence: CPU time (s, all " + std::to_string(o.threads) +
+                  " threads) and wall time of each grid "
                   "and dt run, |value - reference| per quantity, and (u_) the reference's band; transport: index in --transports "
-                  "(-1 explicit); reference: the finest grid's smallest-dt run " + ref.run.name + " +- its band (grid plus dt "
-                  "uncertainty): " + refs);
+                  "(-1 explicit); reference: the finest grid's smallest-dt run " +
+                  ref.run.name +
+                  " +- its band (grid plus dt "
+                  "uncertainty): " +
+                  refs);
     std::vector<const Fig7Result*> runs;
     for (const Fig7Result& r : a.results)
         if ((r.run.kind == Fig7Kind::grid || r.run.kind == Fig7Kind::dt) && &r != &ref) runs.push_back(&r);
@@ -52,15 +57,18 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
     for (const Fig7Result* r : runs) {
         const auto t = std::find(o.transports.begin(), o.transports.end(), r->run.transport);
         TableRow row{{"transport", r->run.explicit_steps ? -1.0 : static_cast<double>(t - o.transports.begin())},
-                     {"cells", static_cast<double>(r->run.cells)}, {"dt_factor", r->run.dt_factor}, {"cpu_s", r->cpu},
+                     {"cells", static_cast<double>(r->run.cells)},
+                     {"dt_factor", r->run.dt_factor},
+                     {"cpu_s", r->cpu},
                      {"wall_s", r->wall}};
-        for (int q = 0; q < kFig7Quantities; ++q) row.add(std::string("err_") + quantities[q].name, std::fabs(r->value[q] - ref.value[q]));
+        for (int q = 0; q < kFig7Quantities; ++q)
+            row.add(std::string("err_") + quantities[q].name, std::fabs(r->value[q] - ref.value[q]));
         for (int q = 0; q < kFig7Quantities; ++q) row.add(std::string("u_") + quantities[q].name, a.band(q));
         table.row(row);
         const auto err = [&](int q) { return error_cell(std::fabs(r->value[q] - ref.value[q]), a.band(q)); };
         md << "| " << series_name(*r) << " | " << r->run.cells << " | " << fig7_number(1e3 * r->run.dt_max, 4) << " | "
-           << fig7_number(r->cpu, 4) << " | " << err(kAngle) << " | " << err(kIndex) << " | " << err(kLayer) << " | " << err(kCore)
-           << " |\n";
+           << fig7_number(r->cpu, 4) << " | " << err(kAngle) << " | " << err(kIndex) << " | " << err(kLayer) << " | "
+           << err(kCore) << " |\n";
     }
     double total_cpu = 0;
     for (const Fig7Result& r : a.results) total_cpu += r.cpu;
@@ -85,8 +93,8 @@ std::vector<std::string> write_fig7_work(const Fig7Analysis& a, const Fig7Option
         answer += best ? run_text(*best) + ", " + fig7_number(best->cpu, 3) + " s CPU"
                        : "the reference run itself (" + fig7_number(ref.cpu, 3) + " s CPU), no cheaper run is close enough";
         if (angle_u > use.angle || index_u > use.index)
-            answer += " (not established: the reference's band, " + fig7_number(angle_u, 3) + " deg and " + fig7_number(index_u, 3) +
-                      ", exceeds the tolerance)";
+            answer += " (not established: the reference's band, " + fig7_number(angle_u, 3) + " deg and " +
+                      fig7_number(index_u, 3) + ", exceeds the tolerance)";
         answers.push_back(answer + ".");
         md << "* " << answers.back() << "\n";
     }

@@ -1,11 +1,11 @@
 #include "study/study_options.hpp"
 
 #include "core/choice.hpp"
-#include "flow_fields/flow_settings.hpp"
 #include "core/error.hpp"
+#include "flow_fields/flow_settings.hpp"
 #include "harness/side_by_side.hpp"
-#include "study/fig7_report.hpp"
 #include "scenes/tumbler.hpp"
+#include "study/fig7_report.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -39,8 +39,8 @@ std::vector<int> cell_list(const std::string& program, const std::string& option
     return cells;
 }
 
-std::vector<double> number_list(const std::string& program, const std::string& option, const std::string& text,
-                                double lower, double upper) {
+std::vector<double> number_list(const std::string& program, const std::string& option, const std::string& text, double lower,
+                                double upper) {
     std::ostringstream allowed;
     allowed << "comma-separated numbers in (" << lower << ", " << upper << "), or none";
     std::vector<double> numbers;
@@ -49,7 +49,8 @@ std::vector<double> number_list(const std::string& program, const std::string& o
     for (std::string item; std::getline(in, item, ',');) {
         char* end = nullptr;
         const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !(v > lower && v < upper)) bad_option(program, option, "\"" + text + "\"", allowed.str());
+        if (item.empty() || *end != '\0' || !(v > lower && v < upper))
+            bad_option(program, option, "\"" + text + "\"", allowed.str());
         numbers.push_back(v);
     }
     return numbers;
@@ -85,7 +86,8 @@ void check_run_options(const std::string& program, Fig7Options& o) {
 void add_run_options(boost::program_options::options_description& d, Fig7Options& o) {
     namespace po = boost::program_options;
     d.add_options()("t-end", po::value(&o.t_end)->default_value(o.t_end), "s, length of every run")(
-        "average-from", po::value(&o.average_from)->default_value(o.average_from), "s, start of the angle's and layer's averages")(
+        "average-from", po::value(&o.average_from)->default_value(o.average_from),
+        "s, start of the angle's and layer's averages")(
         "jitter-window", po::value(&o.jitter_window)->default_value(o.jitter_window), "s before t_end for a value's jitter")(
         "threads", po::value(&o.threads)->default_value(o.threads), "OpenMP threads of every run")(
         "lanes", po::value(&o.lanes)->default_value(o.lanes), "runs side by side, one thread each (0: one per core)")(
@@ -93,7 +95,8 @@ void add_run_options(boost::program_options::options_description& d, Fig7Options
 }
 
 boost::program_options::variables_map parse_study_command_line(const std::string& program, int argc, char** argv,
-                                                               const boost::program_options::options_description& d, Fig7Options& o) {
+                                                               const boost::program_options::options_description& d,
+                                                               Fig7Options& o) {
     namespace po = boost::program_options;
     po::variables_map vm;
     try {

@@ -20,8 +20,8 @@ namespace granseg::verify {
 std::vector<int> cell_list(const std::string& program, const std::string& option, const std::string& text);
 
 /// "0.5,0.25" -> {0.5, 0.25}; "" or "none" -> {}; each number in the open interval (lower, upper).
-std::vector<double> number_list(const std::string& program, const std::string& option, const std::string& text,
-                                double lower, double upper);
+std::vector<double> number_list(const std::string& program, const std::string& option, const std::string& text, double lower,
+                                double upper);
 
 /// "muscl,donor-cell" -> the transports, each one of [flow] transport's names, no repeats.
 std::vector<std::string> transport_list(const std::string& program, const std::string& text);
@@ -37,6 +37,7 @@ void add_run_options(boost::program_options::options_description& d, Fig7Options
 /// Parses the command line with `d`: --help prints `d` and exits 0; an unknown or malformed option
 /// stops with "PROGRAM: WHAT (allowed: the options of --help)", exit 2. Sets o.reuse from --reuse.
 boost::program_options::variables_map parse_study_command_line(const std::string& program, int argc, char** argv,
-                                                               const boost::program_options::options_description& d, Fig7Options& o);
+                                                               const boost::program_options::options_description& d,
+                                                               Fig7Options& o);
 
 }  // namespace granseg::verify

@@ -54,8 +54,8 @@ inline std::string wave_pattern(const RiemannSolution& s) {
     return p;
 }
 
-inline double flux_of(const FluxSide& q) { return q.a * q.phi * (q.phi - q.Phi) / q.Phi; }     // eq. (49)
-inline double speed_of(const FluxSide& q) { return q.a * (2.0 * q.phi / q.Phi - 1.0); }       // eq. (55)
+inline double flux_of(const FluxSide& q) { return q.a * q.phi * (q.phi - q.Phi) / q.Phi; }  // eq. (49)
+inline double speed_of(const FluxSide& q) { return q.a * (2.0 * q.phi / q.Phi - 1.0); }     // eq. (55)
 
 /// Integral of phi(xi) over [lo, hi], exact for the piecewise linear profile of the solution
 /// (constant states and fans, where phi is linear in xi): midpoint rule between the wave speeds.
@@ -93,8 +93,8 @@ inline SolutionErrors check_exact_solution(const RiemannSolution& s, double F_eq
         if (w.right.Phi != side.Phi || w.right.a != side.a) broken = true;
         if (w.speed_left < last_speed - tol || w.speed_right < w.speed_left - tol) broken = true;
         if (!standing && !same_curve && (past_standing ? w.speed_left < -tol : w.speed_right > tol)) broken = true;
-        if (standing && (past_standing || w.speed_left != 0.0 || w.speed_right != 0.0 ||
-                         w.left.phi != s.phi_minus || w.right.phi != s.phi_plus))
+        if (standing && (past_standing || w.speed_left != 0.0 || w.speed_right != 0.0 || w.left.phi != s.phi_minus ||
+                         w.right.phi != s.phi_plus))
             broken = true;
         past_standing = past_standing || standing;
         last_speed = w.speed_right;

@@ -26,20 +26,28 @@ constexpr Family kFamilies[] = {Family::equal_T, Family::unequal_T, Family::nega
 
 inline const char* family_name(Family f) {
     switch (f) {
-        case Family::equal_T: return "a_L = a_R > 0 (T_L = T_R)";
-        case Family::unequal_T: return "a_L, a_R > 0, T_L != T_R";
-        case Family::negative: return "a_L, a_R < 0 (concave, mirrored cases)";
-        case Family::mixed: return "a_L a_R <= 0 (sign change or zero)";
+        case Family::equal_T:
+            return "a_L = a_R > 0 (T_L = T_R)";
+        case Family::unequal_T:
+            return "a_L, a_R > 0, T_L != T_R";
+        case Family::negative:
+            return "a_L, a_R < 0 (concave, mirrored cases)";
+        case Family::mixed:
+            return "a_L a_R <= 0 (sign change or zero)";
     }
     return "?";
 }
 
 inline const char* family_tag(Family f) {
     switch (f) {
-        case Family::equal_T: return "T=";
-        case Family::unequal_T: return "T!=";
-        case Family::negative: return "a<0";
-        case Family::mixed: return "mix";
+        case Family::equal_T:
+            return "T=";
+        case Family::unequal_T:
+            return "T!=";
+        case Family::negative:
+            return "a<0";
+        case Family::mixed:
+            return "mix";
     }
     return "?";
 }
@@ -56,11 +64,10 @@ struct Table1Row {
     Table1Flux flux;
 };
 inline constexpr Table1Row kTable1[10] = {
-    {1, 'A', "SC", Table1Flux::f_QR},    {2, 'B', "RC", Table1Flux::f_QR},
-    {3, 'C', "RCS", Table1Flux::fL_min}, {4, 'D', "RCR", Table1Flux::fL_min},
-    {5, 'E', "RCR", Table1Flux::fR_min}, {6, 'F', "SCR", Table1Flux::fR_min},
-    {7, 'G', "SC", Table1Flux::f_QR},    {8, 'H', "CS", Table1Flux::f_QL},
-    {9, 'I', "CR", Table1Flux::f_QL},    {10, 'J', "SCR", Table1Flux::fR_min},
+    {1, 'A', "SC", Table1Flux::f_QR},     {2, 'B', "RC", Table1Flux::f_QR},    {3, 'C', "RCS", Table1Flux::fL_min},
+    {4, 'D', "RCR", Table1Flux::fL_min},  {5, 'E', "RCR", Table1Flux::fR_min}, {6, 'F', "SCR", Table1Flux::fR_min},
+    {7, 'G', "SC", Table1Flux::f_QR},     {8, 'H', "CS", Table1Flux::f_QL},    {9, 'I', "CR", Table1Flux::f_QL},
+    {10, 'J', "SCR", Table1Flux::fR_min},
 };
 
 /// The problem in the convex frame: itself if a_L, a_R > 0, its mirror image (Q_R, -a_R | Q_L,
@@ -75,10 +82,18 @@ inline double table1_flux(const Table1Row& row, const FluxSide& L, const FluxSid
     const auto [cL, cR] = convex_frame(L, R);
     double F = 0.0;
     switch (row.flux) {
-        case Table1Flux::f_QR: F = segregation_flux(cR.phi, cR.Phi, cR.a); break;
-        case Table1Flux::f_QL: F = segregation_flux(cL.phi, cL.Phi, cL.a); break;
-        case Table1Flux::fL_min: F = -0.25 * cL.a * cL.Phi; break;
-        case Table1Flux::fR_min: F = -0.25 * cR.a * cR.Phi; break;
+        case Table1Flux::f_QR:
+            F = segregation_flux(cR.phi, cR.Phi, cR.a);
+            break;
+        case Table1Flux::f_QL:
+            F = segregation_flux(cL.phi, cL.Phi, cL.a);
+            break;
+        case Table1Flux::fL_min:
+            F = -0.25 * cL.a * cL.Phi;
+            break;
+        case Table1Flux::fR_min:
+            F = -0.25 * cR.a * cR.Phi;
+            break;
     }
     return cL.a == L.a ? F : -F;
 }
@@ -125,10 +140,14 @@ public:
     std::pair<FluxSide, FluxSide> pair(Family family, bool snap) {
         const double sL = std::sqrt(uniform(0.05, 4.0)), sR = std::sqrt(uniform(0.05, 4.0));  // sqrt(T)
         switch (family) {
-            case Family::equal_T: return {side(sL, snap), side(sL, snap)};
-            case Family::unequal_T: return {side(sL, snap), side(sR, snap)};
-            case Family::negative: return {side(-sL, snap), side(-sR, snap)};
-            case Family::mixed: break;
+            case Family::equal_T:
+                return {side(sL, snap), side(sL, snap)};
+            case Family::unequal_T:
+                return {side(sL, snap), side(sR, snap)};
+            case Family::negative:
+                return {side(-sL, snap), side(-sR, snap)};
+            case Family::mixed:
+                break;
         }
         const int kind = static_cast<int>(std::floor(uniform(0.0, kMixedKinds)));
         static const int signs[kMixedKinds][2] = {{1, -1}, {-1, 1}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0, 0}};
@@ -146,8 +165,8 @@ inline double region_margin(const FluxSide& L, const FluxSide& R) {
     const double psi_L = L.phi / L.Phi, psi_R = R.phi / R.Phi;
     if (L.a * R.a <= 0.0) return std::min({psi_L, 1.0 - psi_L, psi_R, 1.0 - psi_R});
     const auto [cL, cR] = convex_frame(L, R);
-    const double q[4] = {segregation_flux(cL.phi, cL.Phi, cL.a), segregation_flux(cR.phi, cR.Phi, cR.a),
-                         -0.25 * cL.a * cL.Phi, -0.25 * cR.a * cR.Phi};
+    const double q[4] = {segregation_flux(cL.phi, cL.Phi, cL.a), segregation_flux(cR.phi, cR.Phi, cR.a), -0.25 * cL.a * cL.Phi,
+                         -0.25 * cR.a * cR.Phi};
     const double scale = 0.25 * std::max(cL.a * cL.Phi, cR.a * cR.Phi);
     double m = std::min(std::fabs(psi_L - 0.5), std::fabs(psi_R - 0.5));
     for (int i = 0; i < 4; ++i)
