@@ -18,7 +18,7 @@ RUN_THREADS = $(if $(filter 1,$(JOBS)),,OMP_NUM_THREADS=1)
 
 # The one place that lists the Debian packages the project needs.
 DEBIAN_PACKAGES := g++ make libgsl-dev libeigen3-dev libboost-test-dev \
-                   libboost-program-options-dev gnuplot-nox libtomlplusplus-dev libmuparser-dev
+                   libboost-program-options-dev gnuplot-nox libtomlplusplus-dev libmuparser-dev clang-format
 
 CXX := g++
 OPT ?= -O2
@@ -68,7 +68,7 @@ FULL_PNG     := $(FULL_GP:figures/%.gp=$(BUILD)/figures/%.png)
 RUNS         := $(BUILD)/runs
 
 .PHONY: FORCE all verify test figures fig7 bench figures-full sanitize tsan clean deps \
-        run-verification run-bench docs-figures docs-refresh
+        run-verification run-bench docs-figures docs-refresh format format-check
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
@@ -160,7 +160,7 @@ verify: deps
 	@tools/verify_summary.sh $(BUILD) "$(VERIFY_NAMES)" "$(FIG_PNG)"
 
 # make test: the unit tests, with a count of passed and failed cases.
-test: deps
+test: deps format-check
 	@$(MAKE) --no-print-directory -j$(JOBS) $(TEST_BIN)
 	@tools/run_unit_tests.sh $(TEST_BIN) $(BUILD)/tests/report.xml
 
@@ -240,7 +240,7 @@ bench: deps
 # make sanitize, make tsan: the address, undefined-behaviour and thread sanitizers (mk/sanitizers.mk).
 figures-full docs-figures sanitize tsan: deps
 docs-refresh: $(BUILD)/verification/verify_docs
-include mk/pages.mk mk/sanitizers.mk
+include mk/pages.mk mk/sanitizers.mk mk/format.mk
 
 # make clean: everything generated.
 clean:
