@@ -1,10 +1,12 @@
 // Core utilities: data tables, atomic output, the grid.
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "core/grid.hpp"
 #include "core/output.hpp"
 
 #include <boost/test/unit_test.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -57,6 +59,13 @@ BOOST_AUTO_TEST_CASE(grid_indexing_and_geometry) {
     BOOST_TEST(g.face_index(2, 3, 0, 3) == 15u);
     BOOST_TEST(g.face_index(2, 1, 0, 1) + g.face_stride(2) == g.face_index(2, 1, 0, 2));
     BOOST_TEST(g.face_index(0, 1, 0, 1) + g.face_stride(0) == g.face_index(0, 2, 0, 1));
+}
+
+BOOST_AUTO_TEST_CASE(format_exact_is_the_shortest_text_that_reads_back_exactly) {
+    BOOST_TEST(format_exact(0.1) == "0.1");  // not 0.10000000000000001
+    BOOST_TEST(format_exact(25.0) == "25");
+    BOOST_TEST(format_exact(0.1 + 0.2) == "0.30000000000000004");  // 0.3 would be another double
+    for (double v : {1.0 / 3.0, 2e-3, -7.25e-300, 6.02214076e23}) BOOST_TEST(std::strtod(format_exact(v).c_str(), nullptr) == v);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,6 +1,7 @@
 #include "core/checkpoint_file.hpp"
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -34,8 +35,7 @@ bool write_all(int fd, std::string_view bytes) {
 
 /// The header lines above the checksum line.
 std::string head_of(const Checkpoint& c, std::size_t payload) {
-    char t[40];
-    std::snprintf(t, sizeof t, "%.17g", c.t);
+    const std::string t = format_exact(c.t);
     return "granseg checkpoint\nformat " + std::to_string(kCheckpointFormat) + "\nkind " + c.kind + "\nprogram " + c.program +
            "\nscene " + c.scene + "\nt " + t + "\nsteps " + std::to_string(c.steps) + "\nfinished " + (c.finished ? "1" : "0") +
            "\npayload " + std::to_string(payload) + "\n";

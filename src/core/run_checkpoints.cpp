@@ -168,8 +168,8 @@ bool RunCheckpoints::resume(double t_end, const RunState& state) {
     // (written out again, it keeps that state for a later extension).
     const bool extend = c.finished && t_end > c.t && c.has("resume");
     if (!extend && t_end < c.t)
-        return refuse("its state is at t = " + format_number(c.t, 17) +
-                      " s, after this scene's t_end = " + format_number(t_end, 17) + " s");
+        return refuse("its state is at t = " + format_exact(c.t) + " s, after this scene's t_end = " + format_exact(t_end) +
+                      " s");
     BlobStore files;
     StateIO io = runner_state(c, extend ? "resume" : "state", plan_.path, &files, &earlier_);
     if (c.finished && !extend && c.has("resume")) kept_ = c.block("resume", plan_.path), kept_files_ = files;

@@ -220,9 +220,7 @@ Expression SceneFile::expression(const std::string& section, const std::string& 
 }
 
 double SceneFile::note(const std::string& section, const std::string& key, double v) const {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    impl_->used[{section, key}] = text;
+    impl_->used[{section, key}] = format_exact(v);
     return v;
 }
 
@@ -243,7 +241,7 @@ std::string SceneFile::note(const std::string& section, const std::string& key, 
 
 std::vector<double> SceneFile::note(const std::string& section, const std::string& key, const std::vector<double>& v) const {
     std::string text = "[";
-    for (double x : v) text += (text.size() > 1 ? ", " : "") + format_number(x, 17);
+    for (double x : v) text += (text.size() > 1 ? ", " : "") + format_exact(x);
     impl_->used[{section, key}] = text + "]";
     return v;
 }

@@ -23,7 +23,7 @@ double discriminant(double F, double Phi, double a) {
                          ")");
     const double d = 1.0 + 4.0 * F / (a * Phi);
     if (d < -kClampSlack || d > 1.0 + kClampSlack)
-        throw InputError("flux inverse: F = " + format_number(F, 17) + " is not a value of f(.; Phi = " + format_number(Phi) +
+        throw InputError("flux inverse: F = " + format_exact(F) + " is not a value of f(.; Phi = " + format_number(Phi) +
                          ", a = " + format_number(a) + ")");
     return std::clamp(d, 0.0, 1.0);
 }

@@ -77,8 +77,8 @@ Connection convex_connection(const FluxSide& L, const FluxSide& R) {
     if (n == 0) throw InvariantError("Riemann solver: no admissible connection (a bug)");
     for (int k = 1; k < n; ++k)
         if (std::fabs(found[k].F - found[0].F) > tie)
-            throw InvariantError("Riemann solver: two admissible interface fluxes " + format_number(found[0].F, 17) + " and " +
-                                 format_number(found[k].F, 17) + " (a bug)");
+            throw InvariantError("Riemann solver: two admissible interface fluxes " + format_exact(found[0].F) + " and " +
+                                 format_exact(found[k].F) + " (a bug)");
     return found[0];
 }
 

@@ -63,8 +63,8 @@ std::string read_flow_source(const SceneFile& scene, double t_end) {
         }
     if (!(t_end > c.t))
         scene.fail("run", "t_end",
-                   format_number(t_end, 17) + " s is not after the time of [initial] flow, " + format_number(c.t, 17) + " s",
-                   "t_end > " + format_number(c.t, 17) + " (the run continues the flow's clock)");
+                   format_exact(t_end) + " s is not after the time of [initial] flow, " + format_exact(c.t) + " s",
+                   "t_end > " + format_exact(c.t) + " (the run continues the flow's clock)");
     return path;
 }
 

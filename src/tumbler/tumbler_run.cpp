@@ -39,9 +39,9 @@ void check_continuation(const std::string& file, const TumblerRunResult& result,
                         const std::function<double(int)>& frame_time) {
     const auto check = [&](const char* key, double recorded, double here, double spacing) {
         if (recorded != here)
-            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " + format_number(recorded, 17) +
-                             " s, this scene's at t = " + format_number(here, 17) + " s (allowed: the checkpoint's spacing, " +
-                             format_number(spacing, 17) + " s, up to the new t_end)");
+            throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " + format_exact(recorded) +
+                             " s, this scene's at t = " + format_exact(here) + " s (allowed: the checkpoint's spacing, " +
+                             format_exact(spacing) + " s, up to the new t_end)");
     };
     const auto& h = result.history;
     if (h.size() >= 2) check("samples", h.back().t, sample_time(next_sample - 1), h[1].t - h[0].t);
