@@ -42,6 +42,13 @@ struct CoupledMeasures {
     PatternMetrics metrics;
     PackingContrast contrast;
     LayerRegionShares own;
+    /// The columns of the drum's own regions (layer_regions.hpp) and of the tracer's and the
+    /// points' shares of its core, the same in history.dat and summary.dat.
+    TableRow own_region_columns() const {
+        return {{"r_core_layer", own.r_core},       {"core_layer", own.core}, {"ring_layer", own.ring},
+                {"periphery_layer", own.periphery}, {"axis_layer", own.axis}, {"tracer_core_layer", tracer_core},
+                {"points_core_layer", points_core}};
+    }
     void checkpoint(StateIO& io) {
         io("small_change", small_change)("large_change", large_change)("surface_angle", surface_angle)("axis", axis);
         io("tracer_core", tracer_core)("points_core", points_core)("metrics", metrics)("contrast", contrast)("own", own);
@@ -180,31 +187,25 @@ void CoupledRecord::record_history() {
     layer_.add(flow_.time(), thickness);
     measure_pattern(thickness);
     const CoupledMeasures& m = last_;
-    history_.row({{"t", flow_.time()},
-                  {"steps", static_cast<double>(flow_.steps())},
-                  {"mass_small", amount[0]},
-                  {"mass_large", amount[1]},
-                  {"segregation_index", m.metrics.index},
-                  {"surface_angle_deg", m.surface_angle},
-                  {"ring", m.metrics.ring},
-                  {"periphery", m.metrics.periphery},
-                  {"core", m.metrics.core},
-                  {"mass_small_change", m.small_change},
-                  {"mass_large_change", m.large_change},
-                  {"flowing_fraction", d.flowing_fraction},
-                  {"max_speed", d.max_speed},
-                  {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
-                  {"dt", flow_.last_dt()},
-                  {"layer_thickness", thickness},
-                  {"axis", m.axis},
-                  {"packing_contrast", m.contrast.contrast},
-                  {"r_core_layer", m.own.r_core},
-                  {"core_layer", m.own.core},
-                  {"ring_layer", m.own.ring},
-                  {"periphery_layer", m.own.periphery},
-                  {"axis_layer", m.own.axis},
-                  {"tracer_core_layer", m.tracer_core},
-                  {"points_core_layer", m.points_core}});
+    TableRow row{{"t", flow_.time()},
+                 {"steps", static_cast<double>(flow_.steps())},
+                 {"mass_small", amount[0]},
+                 {"mass_large", amount[1]},
+                 {"segregation_index", m.metrics.index},
+                 {"surface_angle_deg", m.surface_angle},
+                 {"ring", m.metrics.ring},
+                 {"periphery", m.metrics.periphery},
+                 {"core", m.metrics.core},
+                 {"mass_small_change", m.small_change},
+                 {"mass_large_change", m.large_change},
+                 {"flowing_fraction", d.flowing_fraction},
+                 {"max_speed", d.max_speed},
+                 {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
+                 {"dt", flow_.last_dt()},
+                 {"layer_thickness", thickness},
+                 {"axis", m.axis},
+                 {"packing_contrast", m.contrast.contrast}};
+    history_.row(row.add(m.own_region_columns()));
 }
 
 std::array<double, 2> CoupledRecord::check_amounts() {
@@ -260,16 +261,8 @@ DataTable CoupledRecord::summary(const RunTime& cost) const {
                  {"seconds_feedback", tumbler_.timers().feedback},
                  {"inside_cells", static_cast<double>(tumbler_.grid().inside_cells())}};
     append_flow_work(flow_, row);
-    row.add({{"layer_mean", layer_.mean()},
-             {"layer_std", layer_.std_dev()},
-             {"axis", m.axis},
-             {"r_core_layer", m.own.r_core},
-             {"core_layer", m.own.core},
-             {"ring_layer", m.own.ring},
-             {"periphery_layer", m.own.periphery},
-             {"axis_layer", m.own.axis},
-             {"tracer_core_layer", m.tracer_core},
-             {"points_core_layer", m.points_core}});
+    row.add({{"layer_mean", layer_.mean()}, {"layer_std", layer_.std_dev()}, {"axis", m.axis}});
+    row.add(m.own_region_columns());
     append_run_time(cost, row);
     const PatternRegions& r = options_.regions;
     DataTable summary;
