@@ -36,7 +36,7 @@ HARNESS_SRC := $(sort $(wildcard verification/harness/*.cpp))
 STUDY_SRC   := $(sort $(wildcard verification/study/*.cpp))
 VERIFY_SRC  := $(sort $(wildcard verification/verify_*.cpp))
 BENCH_SRC   := $(sort $(wildcard verification/bench/bench_*.cpp))
-TEST_SRC    := $(sort $(wildcard tests/*.cpp))
+TEST_SRC    := $(shell find tests -name '*.cpp' | sort)
 FLOW_SRC    := $(filter src/flow% src/linalg/%,$(LIB_SRC))  # the flow solver (two more flags, below)
 
 # ---- objects: one per source file, under $(BUILD)/obj (mk/unity.mk makes it one per folder) ----
@@ -127,7 +127,7 @@ $(BUILD)/bench/%: $(BUILD)/obj/verification/bench/%.o $(STUDY_OBJ) $(HARNESS_OBJ
 	@mkdir -p $(@D)
 	$(CXX) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
-# The unit tests: one program of every tests/*.cpp, on Boost.Test's shared library.
+# The unit tests: one program of every tests/**/*.cpp (a folder per room of src/), on Boost.Test's shared library.
 $(TEST_BIN): $(TEST_OBJ) $(HARNESS_OBJ) $(LIB) $(BUILD)/test-objects.list
 	@mkdir -p $(@D)
 	$(CXX) $(LDFLAGS) $(filter %.o %.a,$^) $(LDLIBS) -lboost_unit_test_framework -o $@
@@ -159,9 +159,9 @@ verify: deps
 	  echo "verify: some programs did not build, run or render"
 	@tools/verify_summary.sh $(BUILD) "$(VERIFY_NAMES)" "$(FIG_PNG)"
 
-# make test: the unit tests, with a count of passed and failed cases.
+# make test: the unit tests, with a count of passed and failed cases (tests/cli/ runs granseg).
 test: deps format-check
-	@$(MAKE) --no-print-directory -j$(JOBS) $(TEST_BIN)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(TEST_BIN) $(CLI)
 	@tools/run_unit_tests.sh $(TEST_BIN) $(BUILD)/tests/report.xml
 
 # ---- figures -----------------------------------------------------------------------------------

@@ -4,7 +4,7 @@
 # make sanitize: address and undefined-behaviour sanitizers over the unit tests and every
 # verification program (no figures).
 # -Wno-maybe-uninitialized: with -fsanitize=address at -O1, GCC 12 warns inside libstdc++'s
-# <regex>/<functional> (std::function in the regex NFA, used by tests/test_scene_file.cpp), a
+# <regex>/<functional> (std::function in the regex NFA, used by tests/run/scene_file.cpp), a
 # false positive in a system header; the -O2 build keeps the warning on and has none.
 SAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined \
              -Wno-maybe-uninitialized

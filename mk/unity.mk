@@ -27,9 +27,9 @@ CLI_OBJ     := $(call units,$(CLI_SRC))
 HARNESS_OBJ := $(call units,$(HARNESS_SRC))
 STUDY_OBJ   := $(call units,$(STUDY_SRC))
 FLOW_OBJ    := $(call units,$(FLOW_SRC))
-# tests/test_main.cpp defines the test program's entry (BOOST_TEST_MODULE before Boost.Test's
+# tests/main.cpp defines the test program's entry (BOOST_TEST_MODULE before Boost.Test's
 # header): a unit of its own.
-UNITY_ALONE := tests/test_main.cpp
+UNITY_ALONE := tests/main.cpp
 TEST_OBJ    := $(call units,$(filter-out $(UNITY_ALONE),$(TEST_SRC))) $(call obj,$(UNITY_ALONE))
 
 # A folder's unit (src-flow: the files of src/flow in name order), written by tools/unity_unit.sh,

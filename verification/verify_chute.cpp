@@ -15,7 +15,7 @@
 // Writes chute_phi.dat (N = 64) for inspection.
 //
 // Run: build/verification/verify_chute [--data DIR]   (a few seconds)
-#include "flow_faces/convection.hpp"
+#include "flow/faces/convection.hpp"
 #include "harness/check_table.hpp"
 #include "harness/gray_thornton.hpp"
 #include "harness/program.hpp"

@@ -57,7 +57,7 @@
 #include <string>
 #include <vector>
 
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 namespace fs = std::filesystem;
 using namespace granseg::verify;
@@ -327,7 +327,7 @@ void check_detectors(CheckTable& t, const TreeNames& tree) {
                                  "`src/flow/nonexis" + "tent_file.cpp`\n`[flow] nonexis" + "tent_key = 1`\n`--nonexis" +
                                  "tent-option`\n";
     const std::string real =
-        "`FlowSolver::step()`\n`make verify`\n`src/flow_pressure/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
+        "`FlowSolver::step()`\n`make verify`\n`src/flow/pressure/pressure_solver.hpp`\n`[flow] dt_max = 2e-3`\n"
         "`--data`\n`steps_dt_max`\n`time = 1.5 s`\n";
     t.count("detector self-check: invented names flagged (of 5)",
             static_cast<long>(unknown_names(invented, "docs/x.md", tree).size()), 5);

@@ -1,4 +1,4 @@
-// Verification of drums of other cross-sections (core/drum_shape.hpp, docs/drum_shapes.md): the
+// Verification of drums of other cross-sections (drum/drum_shape.hpp, docs/drum_shapes.md): the
 // same solver in a regular polygon instead of the circle of Sect. 4.2. Coarse grids, one thread.
 //   1. Geometry: the cells' exact areas inside a square, a triangle and a circle sum to the
 //      shapes' areas (closed forms); a half-full square's surface passes through the axis at every
@@ -14,12 +14,12 @@
 //      turning clockwise from the mirrored phi_hat gives the mirrored fields.
 //
 // Run: build/verification/verify_drum_shapes [--data DIR]   (a few seconds)
-#include "core/scene_file.hpp"
-#include "flow_run/bed.hpp"
-#include "flow_run/flow_output.hpp"
+#include "drum/bed.hpp"
+#include "flow/flow_tables.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/tumbler.hpp"
 #include "segregation/invariants.hpp"
 

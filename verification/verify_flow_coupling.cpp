@@ -12,8 +12,8 @@
 //
 // Run: build/verification/verify_flow_coupling [--data DIR]   (a few seconds)
 #include "closures/closures.hpp"
+#include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_run/bed.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"

@@ -56,7 +56,7 @@ const Stepping kDefaultStepping{FlowSettings{}.dt_max, FlowSettings{}.pressure_t
 // a few hundred units of double-precision resolution, room for the rounding every face adds to
 // the discrete balance each step.
 constexpr double kMomentumRoundOff = 1e-13 * 0.6 * 0.6262;  // 0.6262 = sqrt(9.81 * 0.04)
-// The discrete balance is the trapezoidal rule p_k - p_(k+1) = (Phi_k + Phi_(k+1)) |g| h/2 (flow_faces/hllc.hpp),
+// The discrete balance is the trapezoidal rule p_k - p_(k+1) = (Phi_k + Phi_(k+1)) |g| h/2 (flow/faces/hllc.hpp),
 // second order: successive halvings of h must reduce the error by 2^kOrderMin at least
 // (1.7 leaves room for the pre-asymptotic coarsest grid).
 constexpr double kOrderMin = 1.7;

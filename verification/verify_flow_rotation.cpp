@@ -16,8 +16,8 @@
 //
 // Run: build/verification/verify_flow_rotation [--data DIR]   (about 30 s on one thread)
 #include "closures/closures.hpp"
+#include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_run/bed.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"
@@ -43,7 +43,7 @@ constexpr double kNoHeating = 1e-12;
 // 3-D slab against 2-D with equal steps (the CFL condition counts the waves along y, so both runs
 // take dt_max): the y direction adds fluxes between identical states (exactly zero), cyclic
 // line solves of constant data (exact up to rounding), sums over the slab's copies in another
-// order (the temperature's conjugate gradients, flow_diffusion/temperature.cpp) and, with the coupled
+// order (the temperature's conjugate gradients, flow/diffusion/temperature.cpp) and, with the coupled
 // viscosity, a sparse Cholesky factor of the 3-D matrix eliminated in another order. So the runs
 // differ by rounding injected every step, and the flow amplifies it. Two bounds, the larger holds:
 //  - linear accumulation: a few roundings per step summed over the 7,500 steps: 1e-10 of Phi, T

@@ -24,8 +24,8 @@
 // Run: build/verification/verify_flow_stress [--data DIR]   (about 10 s)
 #include "closures/closures.hpp"
 #include "core/error.hpp"
+#include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_run/bed.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"

@@ -1,4 +1,4 @@
-// Verification of the kinematic rolling-drum flow (src/tumbler/kinematic_flow.hpp) on the grid of
+// Verification of the kinematic rolling-drum flow (src/kinematic/kinematic_flow.hpp) on the grid of
 // Sect. 4.2 (100 cells per diameter), the velocity field the tumbler-kinematic scene transports with.
 //
 // What is checked, and against what independent expectation:
@@ -22,8 +22,8 @@
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/tolerances.hpp"
-#include "tumbler/kinematic_flow.hpp"
-#include "tumbler/tumbler_tables.hpp"
+#include "kinematic/kinematic_flow.hpp"
+#include "kinematic/kinematic_tables.hpp"
 
 #include <Eigen/Geometry>
 

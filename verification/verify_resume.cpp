@@ -9,15 +9,15 @@
 // cannot be continued (truncated, corrupted, of another kind, scene or build, past t_end, or a
 // source of another drum) is refused with exit status 2 and one line naming the file.
 //
-// On two threads, a drum restored from a save continues to the bit: tests/test_checkpoint.cpp (the
+// On two threads, a drum restored from a save continues to the bit: tests/run/checkpoint.cpp (the
 // grid must be one whose loops run on threads, 92 cells per diameter: too long for this program).
 // Run: build/verification/verify_resume [--data DIR]   (about two seconds of CPU: a drum of 26 cells
 // per diameter runs for fractions of a second, a dozen times; the kill times are drawn at random)
-#include "core/checkpoint_file.hpp"
 #include "harness/check_table.hpp"
 #include "harness/cli_process.hpp"
 #include "harness/program.hpp"
 #include "harness/same_outputs.hpp"
+#include "run/checkpoint_file.hpp"
 
 #include <signal.h>
 #include <unistd.h>

@@ -17,7 +17,7 @@
 // they break the bounds by design (verify_overshoot).
 //
 // Run: build/verification/verify_segregation_stress [--data DIR]   (15-25 s)
-#include "flow_faces/convection.hpp"
+#include "flow/faces/convection.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/segregation_run.hpp"

@@ -30,8 +30,8 @@
 //
 // Run: build/verification/verify_transport [--data DIR]   (a few seconds)
 #include "core/error.hpp"
+#include "flow/faces/convection.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_faces/convection.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/program.hpp"

@@ -1,5 +1,5 @@
 // Verification of the whole model in the drum of Sect. 4.2 (scene kind tumbler: flow and
-// segregation coupled, src/tumbler/coupled_tumbler.hpp) on a coarse grid, 32 cells per diameter,
+// segregation coupled, src/coupled/coupled_tumbler.hpp) on a coarse grid, 32 cells per diameter,
 // single-threaded. Every run goes through the scene's reader and time loop (read_tumbler,
 // run_coupled_tumbler). Walk-through: docs/sect4.2_tumbler.md.
 //   1. The Sect. 4.2 set-up for 25 s (S = 1, packing feedback), watched after every step:
@@ -14,7 +14,7 @@
 //      and its files are the Fig. 7a-d data of `make verify` (DATA/tumbler).
 //   2. b. S = 0 with packing feedback, 5 s: phi_hat stays uniform to 1e-12 after every step, and
 //      Phi, u, T equal those of the flow solver run alone on the same drum (the tumbler-flow code
-//      path: DrumSpec, drum_bed_at_rest, advance_flow) to round-off.
+//      path: DrumSpec, drum_bed_at_rest, run_flow) to round-off.
 //   3. e. The Fig. 7d contrast (packing_contrast.hpp) on a bed started in three vertical bands
 //      (pure large, mixed, pure small), 5 s, with packing feedback on and off: on, mixed material
 //      packs denser than pure material at equal depth, by the amount the packing law predicts at
@@ -24,14 +24,16 @@
 //
 // Run: build/verification/verify_tumbler [--data DIR]   (about a minute)
 #include "closures/closures.hpp"
-#include "core/scene_file.hpp"
+#include "coupled/packing_contrast.hpp"
 #include "direction/segregation_direction.hpp"
-#include "flow_run/flow_output.hpp"
+#include "drum/drum_state.hpp"
+#include "flow/flow_loop.hpp"
+#include "flow/flow_tables.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/tumbler.hpp"
 #include "segregation/invariants.hpp"
-#include "tumbler/packing_contrast.hpp"
 
 #include <Eigen/Geometry>
 
@@ -113,8 +115,8 @@ OutputSet run_watched(CheckTable& t, const TumblerScene& scene, CoupledTumbler& 
             if (k.grid().is_inside(c)) outside += !(k.phi()[c] >= 0.0 && k.phi()[c] <= k.flow().Phi()[c]);
         ++steps;
     });
-    t.note(verify::format(steps) + " flow steps, " + verify::format(tumbler.segregation_substeps()) + " segregation sub-steps (" +
-           verify::format(tumbler.segregation_steps()) + " steps of the segregation solver)");
+    t.note(verify::format(steps) + " flow steps, " + verify::format(tumbler.split_segregation_steps()) +
+           " segregation sub-steps (" + verify::format(tumbler.segregation_solver_steps()) + " steps of the segregation solver)");
     t.at_most("a. max relative change of the small phase (sum phi) over all steps", small, kMassTol);
     t.at_most("a. max relative change of the large phase (sum Phi - phi) over all steps", large, kMassTol);
     t.count("a. (cell, step) pairs with phi < 0 or phi > Phi after the step", outside, 0);
@@ -200,7 +202,7 @@ void check_no_segregation(CheckTable& t) {
     FlowSolver alone(grid, scene.setup.material, settings, drum.frame());
     const std::vector<double> zero(grid.cells(), 0.0), T(grid.cells(), settings.T_floor);
     alone.set_state(drum_bed_at_rest(drum, grid, scene.setup.material, 0.5, settings.T_floor), {zero, zero, zero}, T);
-    advance_flow(alone, t_end, "tumbler-flow");
+    run_flow(alone, t_end, "tumbler-flow");
     double dPhi = 0, du = 0, dT = 0;
     for (std::size_t c = 0; c < grid.cells(); ++c) {
         dPhi = std::max(dPhi, std::fabs(alone.Phi()[c] - tumbler.flow().Phi()[c]));

@@ -20,10 +20,10 @@
 //
 // Run: build/verification/verify_tumbler_kinematic [--data DIR]   (about 7 s; reads
 // figures/tumbler_kinematic.toml relative to the source tree the binary was built in)
-#include "core/scene_file.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
 #include "harness/tolerances.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/tumbler_kinematic.hpp"
 #include "segregation/invariants.hpp"
 
@@ -133,7 +133,7 @@ double inner_composition(const KinematicTumbler& tumbler, double radius) {
 
 /// Runs `scene` on `tumbler` through the scene's time loop, watching every step, and records the
 /// conservation and bound checks; `completed` is false if the loop stopped on an invariant.
-TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, KinematicTumbler& tumbler, bool& completed) {
+KinematicRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, KinematicTumbler& tumbler, bool& completed) {
     const double Phi = scene.setup.Phi, allowance = kBoundRoundOff * Phi;
     const double mass0 = total_amount(tumbler.grid(), tumbler.phi());
     double drift = 0;
@@ -150,7 +150,7 @@ TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, 
         }
     };
     const auto start = std::chrono::steady_clock::now();
-    TumblerRunResult result;
+    KinematicRunResult result;
     completed = false;
     try {
         result = run_kinematic_tumbler(tumbler, scene.run, observer);
@@ -175,7 +175,7 @@ TumblerRunResult run_watched(CheckTable& t, const TumblerKinematicScene& scene, 
 
 /// The pattern after the run (section 3 of the walk-through).
 void check_pattern(CheckTable& t, const TumblerKinematicScene& scene, const KinematicTumbler& tumbler,
-                   const TumblerRunResult& result) {
+                   const KinematicRunResult& result) {
     const PatternRegions& r = scene.run.regions;
     const PatternMetrics& end = result.history.back().metrics;
     t.note("pattern at t = " + verify::format(result.history.back().t) + " s; regions: core r < " + verify::format(r.r_core) +
@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
            ")");
     KinematicTumbler tumbler(scene.setup);
     bool completed = false;
-    const TumblerRunResult result = run_watched(t, scene, tumbler, completed);
+    const KinematicRunResult result = run_watched(t, scene, tumbler, completed);
     if (!completed) return t.finish();
     check_direction(t, tumbler);
     check_pattern(t, scene, tumbler, result);
@@ -222,7 +222,7 @@ int main(int argc, char** argv) {
     other.setup.bulk = scene.setup.bulk == BulkScheme::fct ? BulkScheme::donor_cell : BulkScheme::fct;
     t.note("the same scene with bulk transport " + std::string(other.setup.bulk == BulkScheme::fct ? "fct" : "donor-cell"));
     KinematicTumbler second(other.setup);
-    const TumblerRunResult second_result = run_watched(t, other, second, completed);
+    const KinematicRunResult second_result = run_watched(t, other, second, completed);
     if (completed) check_pattern(t, other, second, second_result);
     return t.finish();
 }

@@ -4,7 +4,7 @@
 // with S0 = kS (five times the paper's) so that the pattern, and with it the packing feedback,
 // develops within those seconds; every run goes through the scene's reader and time loop.
 //   Runs: packing feedback on and off, each at the default dt_max and at a quarter of it.
-//   Without packing feedback the flow does not see phi (tests/test_coupled_tumbler.cpp), so the
+//   Without packing feedback the flow does not see phi (tests/coupled/coupled_tumbler.cpp), so the
 //   difference between the two parts' changes from dt to dt/4 is what the coupling adds to the
 //   time error: Delta = (q_fb(dt) - q_fb(dt/4)) - (q_nf(dt) - q_nf(dt/4)).
 //   For a scheme of order p the error at dt is Delta / (1 - 4^-p); with p = 1, the coupled step's
@@ -16,11 +16,11 @@
 // Writes time_step_small.dat (the four runs) to DATA.
 //
 // Run: build/verification/verify_tumbler_time_step [--data DIR]   (about a quarter of a minute)
-#include "core/output.hpp"
-#include "core/scene_file.hpp"
 #include "harness/check_table.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
+#include "run/output.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/tumbler.hpp"
 
 #include <cmath>

@@ -36,24 +36,9 @@ int closures_main(const std::vector<std::string>& args) {
                          format_number(phi_hat) + ") = " + format_number(rcp) + ")");
 
     const ClosureValues v = evaluate_closures(m, Phi, phi_hat, T);
-    const std::pair<const char*, double> lines[] = {
-        {"Phi", Phi},
-        {"phi_hat", phi_hat},
-        {"T", T},
-        {"Phi_rcp", v.Phi_rcp},
-        {"Phi_co", v.Phi_co},
-        {"g", v.g},
-        {"p_k", v.p_k},
-        {"p_y", v.p_y},
-        {"p", v.p},
-        {"p_Pa", v.p * m.rho_star},
-        {"eta", v.eta},
-        {"lambda", v.lambda},
-        {"eps", v.eps},
-        {"dissipation", v.dissipation},
-        {"c", std::sqrt(v.c2)},
-    };
-    for (const auto& [name, value] : lines) std::cout << name << " = " << format_number(value, 10) << '\n';
+    const TableRow lines = TableRow{{"Phi", Phi}, {"phi_hat", phi_hat}, {"T", T}}.add(closure_columns(v, &m));
+    for (std::size_t k = 0; k < lines.size(); ++k)
+        std::cout << lines.names()[k] << " = " << format_number(lines.values()[k], 10) << '\n';
     return 0;
 }
 

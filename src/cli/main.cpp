@@ -3,8 +3,14 @@
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 
+#include <sys/resource.h>
+
+#include <cstdio>
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <new>
+#include <string>
 
 namespace granseg::cli {
 
@@ -21,6 +27,27 @@ const std::vector<Command>& commands() {
 }  // namespace granseg::cli
 
 namespace {
+
+std::string gigabytes(double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f GB", bytes / 1e9);
+    return text;
+}
+
+/// One line for a run that could not get its memory: it needed more than it held at its peak
+/// (VmPeak, the most address space it had), beyond what the process may use (ulimit -v).
+std::string out_of_memory() {
+    double peak = 0.0;
+    std::ifstream status("/proc/self/status");
+    for (std::string word; status >> word;)
+        if (word == "VmPeak:" && status >> peak) peak *= 1024.0;  // kB
+    rlimit limit{};
+    const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    return "granseg: out of memory: the run needed more than the " + gigabytes(peak) + " it held at its peak, beyond " +
+           (limited ? "the " + gigabytes(static_cast<double>(limit.rlim_cur)) + " this process may use (ulimit -v)"
+                    : std::string("what the machine gave it")) +
+           " (allowed: a run that fits: fewer cells, e.g. [drum] cells_per_diameter, or more memory)";
+}
 
 void print_help() {
     std::cout << "granseg: reference code for 'Size segregation in compressible granular shear flows\n"
@@ -56,6 +83,9 @@ int main(int argc, char** argv) {
     } catch (const Interrupted& e) {
         std::cerr << e.what() << '\n';
         return 128 + e.signal();
+    } catch (const std::bad_alloc&) {
+        std::cerr << out_of_memory() << '\n';
+        return kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "granseg: error: " << e.what() << '\n';
         return kExitFailure;

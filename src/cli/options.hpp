@@ -1,7 +1,7 @@
 // Command-line helpers shared by the granseg subcommands (Boost.Program_options).
 #pragma once
 
-#include "core/scene_file.hpp"
+#include "run/scene_file.hpp"
 
 #include <boost/program_options.hpp>
 

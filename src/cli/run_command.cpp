@@ -4,7 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "closures/material.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "scenes/scene_kind.hpp"
 #include "segregation/column.hpp"
 #include "segregation/scheme.hpp"

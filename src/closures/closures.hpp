@@ -22,6 +22,7 @@
 #pragma once
 
 #include "closures/material.hpp"
+#include "run/output.hpp"
 
 #include <cmath>
 #include <limits>
@@ -101,6 +102,11 @@ inline ClosureValues evaluate_closures_at(const Material& m, double Phi, double 
 
 /// Evaluates eqs. (15)-(20) at (Phi, phi_hat, T) for material m.
 ClosureValues evaluate_closures(const Material& m, double Phi, double phi_hat, double T);
+
+/// The closures' output columns, listed once for closures.dat (closure-sweep) and `granseg
+/// closures`: Phi_rcp Phi_co g p_k p_y p eta lambda eps dissipation c (c = sqrt(c^2)); given the
+/// material, p_Pa = p rho* follows p.
+TableRow closure_columns(const ClosureValues& v, const Material* in_pascal = nullptr);
 
 /// Granular temperature of steady homogeneous shear at shear rate gamma_dot, eq. (45) solved
 /// for T: T = (3/2) (eta0/eps0) gamma_dot^2.

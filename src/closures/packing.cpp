@@ -1,7 +1,7 @@
 #include "closures/packing.hpp"
 
-#include "core/embedded.hpp"
 #include "core/error.hpp"
+#include "run/embedded.hpp"
 
 #include <gsl/gsl_multifit.h>
 

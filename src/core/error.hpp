@@ -8,7 +8,7 @@
 //                 without a solution, a missing embedded file). The CLI prints it and exits
 //                 with status 3; no output is written.
 // Interrupted:    a run stopped by SIGINT or SIGTERM after writing its checkpoint
-//                 (core/run_checkpoints.hpp). The CLI prints the message (where the checkpoint is,
+//                 (run/run_checkpoints.hpp). The CLI prints the message (where the checkpoint is,
 //                 how to continue) and exits with status 128 + the signal's number (130, 143).
 // The library throws nothing else: a bad value handed to any function is an InputError, so every
 // entry point (granseg, the verification programs through harness/program.hpp) ends with the

@@ -11,11 +11,13 @@
 //                   short to open a region each; every member of Team ends with the barrier it
 //                   needs, so a caller never writes one;
 //                 parallel_lanes: a few independent tasks, one thread each, none forking again;
-//                 SerialScope: a scope in which nothing opens a second thread.
-//               No other OpenMP directive appears in src/ but `omp simd` (vectorisation).
+//                 ThreadScope, SerialScope: a scope that sets the thread count (SerialScope: one)
+//                   and restores it on exit; max_threads and the team queries read it.
+//               No other OpenMP directive or omp_ call appears in src/, tests/ or verification/
+//               but `omp simd` (vectorisation).
 //   invariants  the results do not depend on the thread count (every threaded loop writes
 //               disjoint entries; reductions are max/min/sum of integers, or of doubles in a
-//               fixed order) - tests/test_threads.cpp checks a drum bitwise on 1 and 2 threads
+//               fixed order) - tests/core/threads.cpp checks a drum bitwise on 1 and 2 threads
 #pragma once
 
 #include <algorithm>
@@ -110,21 +112,43 @@ T parallel_fold(bool parallel, Index n, const T& init, Body&& body, Combine&& co
     return acc;
 }
 
+/// The threads a parallel region opened now gets (OMP_NUM_THREADS, or what a ThreadScope set).
+inline int max_threads() { return omp_get_max_threads(); }
+/// The threads a parallel region opened here gets: it opens one and counts its team.
+inline int region_threads() {
+    int team = 1;
+#pragma omp parallel
+#pragma omp single
+    team = omp_get_num_threads();
+    return team;
+}
+/// This thread's number in its team and how deep the parallel regions around it nest (0 and 0
+/// outside any region).
+inline int thread_number() { return omp_get_thread_num(); }
+inline int region_level() { return omp_get_level(); }
+
 /// Within its scope every parallel region (the project's loops and Eigen's products alike) gets
-/// one thread where `serial`; the caller's thread count comes back on exit.
-class SerialScope {
+/// `threads` threads (0: as before); the caller's thread count comes back on exit, an exception's
+/// included. Tests, benchmarks and the verification harness set a thread count only this way.
+class ThreadScope {
 public:
-    explicit SerialScope(bool serial) : threads_(serial ? omp_get_max_threads() : 0) {
-        if (serial) omp_set_num_threads(1);
+    explicit ThreadScope(int threads) : before_(threads > 0 ? omp_get_max_threads() : 0) {
+        if (threads > 0) omp_set_num_threads(threads);
     }
-    ~SerialScope() {
-        if (threads_ > 0) omp_set_num_threads(threads_);
+    ~ThreadScope() {
+        if (before_ > 0) omp_set_num_threads(before_);
     }
-    SerialScope(const SerialScope&) = delete;
-    SerialScope& operator=(const SerialScope&) = delete;
+    ThreadScope(const ThreadScope&) = delete;
+    ThreadScope& operator=(const ThreadScope&) = delete;
 
 private:
-    int threads_;
+    int before_;
+};
+
+/// A ThreadScope of one thread where `serial` (else nothing changes).
+class SerialScope : ThreadScope {
+public:
+    explicit SerialScope(bool serial) : ThreadScope(serial ? 1 : 0) {}
 };
 
 /// Calls body(l) for each of `lanes` independent lanes: each lane on a thread of its own where

@@ -1,16 +1,16 @@
-#include "tumbler/coupled_run.hpp"
+#include "coupled/coupled_run.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "core/progress.hpp"
 #include "core/threads.hpp"
-#include "flow_run/flow_output.hpp"
+#include "coupled/coupled_tables.hpp"
+#include "coupled/material_points.hpp"
+#include "coupled/packing_contrast.hpp"
+#include "drum/drum_state.hpp"
+#include "drum/layer_regions.hpp"
+#include "flow/flow_tables.hpp"
+#include "run/run_loop.hpp"
 #include "segregation/invariants.hpp"
-#include "tumbler/coupled_tables.hpp"
-#include "tumbler/layer_regions.hpp"
-#include "tumbler/material_points.hpp"
-#include "tumbler/packing_contrast.hpp"
-#include "tumbler/tumbler_run.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -66,7 +66,7 @@ public:
     void carry_points(double dt);
     /// The files: initial_lab.dat, snapshots and frames, history.dat, summary.dat, fields_lab.dat.
     OutputSet finish(const RunTime& cost);
-    /// Saves or restores (core/state_io.hpp) what the record has taken so far; the rest is set-up.
+    /// Saves or restores (run/state_io.hpp) what the record has taken so far; the rest is set-up.
     void checkpoint(StateIO& io) {
         io("record.hat0", hat0_)("record.amount0", amount0_)("record.amount_all", amount_all_)("record.out", out_);
         io("record.history", history_)("record.angle", angle_)("record.layer", layer_)("record.bounds", bounds_);
@@ -200,7 +200,7 @@ void CoupledRecord::record_history() {
                  {"mass_large_change", m.large_change},
                  {"flowing_fraction", d.flowing_fraction},
                  {"max_speed", d.max_speed},
-                 {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
+                 {"substeps", static_cast<double>(tumbler_.split_segregation_steps())},
                  {"dt", flow_.last_dt()},
                  {"layer_thickness", thickness},
                  {"axis", m.axis},
@@ -215,8 +215,8 @@ std::array<double, 2> CoupledRecord::check_amounts() {
     last_.large_change = (amount[1] - amount0_[1]) / amount_all_;
     bounds_.observe(tumbler_.grid(), tumbler_.phi(), flow_.Phi());
     check_segregation_invariants("tumbler", bounds_, tumbler_.largest_correction(), amount0_[0], amount[0], amount_all_,
-                                 kTumblerMassTolerance, true, Phi_max);
-    if (!(std::fabs(last_.large_change) <= kTumblerMassTolerance))
+                                 kAmountTolerance, true, Phi_max);
+    if (!(std::fabs(last_.large_change) <= kAmountTolerance))
         throw InvariantError("tumbler: the amount of large particles changed by " + format_number(last_.large_change, 3) +
                              " (relative to all material) by t = " + format_number(flow_.time()) + " s");
     return amount;
@@ -237,8 +237,8 @@ DataTable CoupledRecord::summary(const RunTime& cost) const {
     const CoupledMeasures& m = last_;
     TableRow row{{"t_end", flow_.time()},
                  {"steps", static_cast<double>(flow_.steps())},
-                 {"substeps", static_cast<double>(tumbler_.segregation_substeps())},
-                 {"segregation_steps", static_cast<double>(tumbler_.segregation_steps())},
+                 {"substeps", static_cast<double>(tumbler_.split_segregation_steps())},
+                 {"segregation_steps", static_cast<double>(tumbler_.segregation_solver_steps())},
                  {"angle_mean_deg", angle_.mean()},
                  {"angle_std_deg", angle_.std_dev()},
                  {"angle_samples", static_cast<double>(angle_.samples())},
@@ -299,24 +299,22 @@ PatternRegions coupled_regions(const DrumSpec& drum, double bed_level) {
 
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options, const CoupledStepObserver& observer,
                               RunCheckpoints* checkpoints) {
-    const double t_end = options.run.t_end;
     const FlowSolver& flow = tumbler.flow();
     CoupledRecord record(tumbler, options);
-    RunCheckpoints& saves = checkpoints_or_none(checkpoints);
-    const RunState state = [&](StateIO& io) { io("tumbler", tumbler)("record", record); };
-    if (!saves.resume(t_end, state)) record.sample();
-    Progress progress("tumbler", t_end, flow.time());
-    while (flow.time() < t_end) {
-        saves.before_step(flow.time(), t_end, flow.settings().dt_max, state);
-        const double dt = tumbler.step(t_end);
-        record.carry_points(dt);
-        if (observer) observer(tumbler);
-        record.sample();
-        progress.update(flow.time());
-        saves.after_step(flow.time(), flow.steps(), state);
-    }
-    saves.finish(flow.time(), flow.steps(), state);
-    return record.finish(progress.finish(run_threads(tumbler.grid().cells())) + saves.earlier());
+    RunLoop loop;
+    loop.label = "tumbler", loop.t_end = options.run.t_end, loop.checkpoints = checkpoints;
+    loop.state = [&](StateIO& io) { io("tumbler", tumbler)("record", record); };
+    loop.time = [&] { return flow.time(); };
+    loop.steps = [&] { return flow.steps(); };
+    loop.step = [&] { record.carry_points(tumbler.step(options.run.t_end)); };
+    loop.longest_step = [&] { return flow.settings().dt_max; };
+    loop.begin = [&](bool resumed) {
+        if (!resumed) record.sample();
+    };
+    if (observer) loop.observers.push_back([&] { observer(tumbler); });
+    loop.observers.push_back([&] { record.sample(); });
+    loop.threads = run_threads(tumbler.grid().cells());
+    return record.finish(run_loop(loop));
 }
 
 }  // namespace granseg

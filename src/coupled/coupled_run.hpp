@@ -1,10 +1,11 @@
-// The time loop of a coupled drum run, shared by the scene kind "tumbler" and verify_tumbler, and
-// the files it writes (docs/scenes.md). The flow is stepped exactly as tumbler-flow steps it (its
-// own dt, up to t_end), so with S = 0 the two runs take the same steps (verify_tumbler). Every
-// kDrumHistoryInterval the segregation is brought up to date and a history row is recorded; the
-// invariants are checked there (InvariantError, exit 3):
+// The coupled drum's run, shared by the scene kind "tumbler" and verify_tumbler, and the files it
+// writes (docs/scenes.md): run/run_loop.hpp configured with the coupled step and what it records.
+// The flow is stepped exactly as tumbler-flow steps it (its own dt, up to t_end), so with S = 0 the
+// two runs take the same steps (verify_tumbler). Every step takes its segregation sub-step
+// (coupled_tumbler.hpp); every kDrumHistoryInterval of time a history row is recorded and the
+// invariants are checked (InvariantError, exit 3):
 //   - the amount of each phase, sum of phi and sum of Phi - phi over the drum, stays within
-//     kTumblerMassTolerance of the whole amount at the start, sum of Phi (both move only by face
+//     kAmountTolerance of the whole amount at the start, sum of Phi (both move only by face
 //     fluxes that telescope; measured against the whole, since a phase may start empty);
 //   - 0 <= phi <= Phi: the bulk step (CoupledTumbler) and the segregation sub-step
 //     (SegregationSolver) may clip only round-off, kBoundRoundOff Phi, checked at every step.
@@ -15,10 +16,10 @@
 //   invariants  the list above, checked while it runs
 #pragma once
 
-#include "core/output.hpp"
-#include "core/run_checkpoints.hpp"
-#include "tumbler/coupled_tumbler.hpp"
-#include "tumbler/pattern_metrics.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "drum/pattern_metrics.hpp"
+#include "run/output.hpp"
+#include "run/run_checkpoints.hpp"
 
 #include <functional>
 
@@ -52,7 +53,7 @@ using CoupledStepObserver = std::function<void(const CoupledTumbler& tumbler)>;
 /// initial_lab.dat and fields_lab.dat (coupled_field_table at t = 0 and t_end), frames/frame_NNN.dat,
 /// vtk/tumbler_NNNN.vtk.
 /// With `checkpoints`, the run writes and resumes checkpoints of the tumbler and of what it has
-/// recorded (core/run_checkpoints.hpp).
+/// recorded (run/run_checkpoints.hpp).
 OutputSet run_coupled_tumbler(CoupledTumbler& tumbler, const CoupledRunOptions& options, const CoupledStepObserver& observer = {},
                               RunCheckpoints* checkpoints = nullptr);
 

@@ -1,8 +1,8 @@
-#include "tumbler/coupled_tables.hpp"
+#include "coupled/coupled_tables.hpp"
 
 #include "core/format.hpp"
-#include "flow_run/flow_output.hpp"
-#include "tumbler/tumbler_tables.hpp"
+#include "drum/drum_tables.hpp"
+#include "flow/flow_tables.hpp"
 
 #include <sstream>
 

@@ -2,8 +2,8 @@
 // frame: the solver's drum-frame positions, velocities and d_s turned by Frame::to_lab_*.
 #pragma once
 
-#include "core/output.hpp"
-#include "tumbler/coupled_tumbler.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "run/output.hpp"
 
 #include <string>
 
@@ -18,7 +18,7 @@ DataTable coupled_field_table(const CoupledTumbler& tumbler);
 /// x z phi_hat of the bed cells (Phi > bed_level), lab frame: a frame of the animation.
 DataTable coupled_composition(const CoupledTumbler& tumbler, double bed_level);
 
-/// The flow's legacy VTK file (flow_output.hpp flow_vtk: Phi, T, p, inside, velocity, lab frame)
+/// The flow's legacy VTK file (flow/flow_tables.hpp flow_vtk: Phi, T, p, inside, velocity, lab frame)
 /// with the cell data phi_hat and d_s (lab frame) appended, for ParaView.
 std::string coupled_vtk(const CoupledTumbler& tumbler);
 

@@ -1,7 +1,8 @@
-#include "tumbler/coupled_tumbler.hpp"
+#include "coupled/coupled_tumbler.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "core/stopwatch.hpp"
 #include "core/threads.hpp"
 #include "direction/segregation_direction.hpp"
 #include "direction/segregation_velocity.hpp"
@@ -9,17 +10,12 @@
 #include "segregation/reconstruction.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace granseg {
 
 namespace {
-
-double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-}
 
 /// The flow settings with the initial mixture as the uniform phi_hat.
 FlowSettings with_mixture(FlowSettings settings, double mixture) {
@@ -133,21 +129,16 @@ std::vector<double> CoupledTumbler::phi_hat() const {
 
 double CoupledTumbler::step(double t_end) {
     const SerialScope serial(!parallel_);  // below the crossover Eigen's products run on one thread too
-    using clock = std::chrono::steady_clock;
-    auto t0 = clock::now();
-    const double dt = flow_.step(t_end);  // 1. (eqs. 8, 9, 14)
-    auto t1 = clock::now();
-    timers_.flow += seconds(t0, t1);
-    transport(phi_, dt);  // 2. (eq. 65, F^bulk)
-    clip_bulk_round_off(phi_, "phi");
-    if (!tracer_.empty()) transport(tracer_, dt), clip_bulk_round_off(tracer_, "the tracer");  // 2'.
-    t0 = clock::now();
-    timers_.bulk += seconds(t1, t0);
-    segregate(dt);  // 3. (eqs. 46, 47, 52b; assumption C1)
-    t1 = clock::now();
-    timers_.segregation += seconds(t0, t1);
-    if (setup_.packing_feedback) flow_.set_phi_hat(phi_hat());  // 4. (eqs. 18, 19)
-    timers_.feedback += seconds(t1, clock::now());
+    const double dt = timed(timers_.flow, [&] { return flow_.step(t_end); });  // 1. (eqs. 8, 9, 14)
+    timed(timers_.bulk, [&] {
+        transport(phi_, dt);  // 2. (eq. 65, F^bulk)
+        clip_bulk_round_off(phi_, "phi");
+        if (!tracer_.empty()) transport(tracer_, dt), clip_bulk_round_off(tracer_, "the tracer");  // 2'.
+    });
+    timed(timers_.segregation, [&] { segregate(dt); });  // 3. (eqs. 46, 47, 52b; assumption C1)
+    timed(timers_.feedback, [&] {
+        if (setup_.packing_feedback) flow_.set_phi_hat(phi_hat());  // 4. (eqs. 18, 19)
+    });
     return dt;
 }
 
@@ -230,8 +221,8 @@ void CoupledTumbler::update_segregation_velocity() {
 
 void CoupledTumbler::segregate(double dt) {
     update_segregation_velocity();
-    segregation_steps_ += segregation_.advance(frozen_, dt, phi_);  // (eq. 52b)
-    ++substeps_;
+    solver_steps_ += segregation_.advance(frozen_, dt, phi_);  // (eq. 52b)
+    ++split_steps_;
 }
 
 }  // namespace granseg

@@ -19,15 +19,15 @@
 //      round-off. muscl: that donor-cell step plus the limited antidiffusion of a MUSCL-Hancock flux
 //      in phi_hat (FctBulkTransport, assumption T5), so phi_new/Phi_new stays within the local
 //      extremes of the old and the donor-cell phi_hat;
+//   2'. a passive tracer, if the setup has one: a second bulk field tau (0 <= tau <= Phi) carried by
+//      the same M with the same transport as phi, and nothing else (no segregation, no feedback):
+//      a dye that marks material, so that what leaves a region is measured in the model's own flow;
 //   3. segregation sub-step with Phi and T frozen (eq. 52b) over the same dt: per cell
 //      a = S^sl = -S0 sqrt(T) (d_s . g) d_s (eq. 46) with T from the flow and d_s (Sect. 2.3) from
 //      the flow's velocity gradient and its velocity, both relative to the drum, so the rotation
 //      of the frame does not enter d_s (docs/assumptions.md D3, C5); a = 0 where Phi < Phi_min
 //      (assumption C2). SegregationSolver::advance (split over the axes, the sign-robust flux of
 //      eq. 63, zero flux on every wall face) covers dt in steps of its own CFL bound;
-//   2'. a passive tracer, if the setup has one: a second bulk field tau (0 <= tau <= Phi) carried by
-//      the same M with the same transport as phi, and nothing else (no segregation, no feedback):
-//      a dye that marks material, so that what leaves a region is measured in the model's own flow;
 //   4. closures from phi_hat: with packing feedback, Phi_rcp(phi_hat) and Phi_co(phi_hat) follow
 //      phi_hat cell by cell (FlowSolver::set_phi_hat; eqs. 18, 19); without, they keep the values
 //      of the initial mixture (assumption C3).
@@ -40,14 +40,14 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/state_io.hpp"
 #include "direction/segregation_direction.hpp"
+#include "drum/drum.hpp"
 #include "flow/flow_solver.hpp"
+#include "run/state_io.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/segregation_solver.hpp"
-#include "tumbler/drum.hpp"
 
 #include <functional>
 #include <limits>
@@ -95,7 +95,7 @@ public:
     /// broken invariant of the flow, or if the bulk step leaves 0 <= phi <= Phi beyond round-off.
     double step(double t_end = std::numeric_limits<double>::infinity());
     /// Starts from another run's flow instead of the bed at rest: the flow solver's state from
-    /// `flow_state` (a tumbler-flow's or a tumbler's checkpoint, core/state_io.hpp), its time and
+    /// `flow_state` (a tumbler-flow's or a tumbler's checkpoint, run/state_io.hpp), its time and
     /// steps included; phi = phi_hat0 Phi and the tracer from tracer0 at the cells' lab positions
     /// at that time; the segregation starts there as at t = 0. InputError for phi_hat0 or tracer0
     /// outside [0, 1] in a cell holding material, InvariantError (packing feedback) for a cell packed
@@ -123,8 +123,11 @@ public:
     /// velocity, both relative to the drum, with D1's threshold raised to the setup's
     /// diagnostic_min_shear_rate; its principal_shear is the cell's shear rate kappa_max - kappa_min.
     SegregationDirection direction(std::size_t c) const;
-    long segregation_substeps() const { return substeps_; }
-    long segregation_steps() const { return segregation_steps_; }
+    /// Segregation sub-steps of the splitting (part 3 above): one per coupled step.
+    long split_segregation_steps() const { return split_steps_; }
+    /// Steps of the segregation solver within them (each sub-step covers the flow's dt in steps
+    /// of the solver's own CFL bound): at least one per sub-step.
+    long segregation_solver_steps() const { return solver_steps_; }
     /// Largest amount the segregation solver's round-off guard moved phi back into [0, Phi].
     double largest_correction() const { return segregation_.largest_correction(); }
     /// Over all bulk steps so far: the extremes of phi - Phi and of phi before the round-off clip,
@@ -165,20 +168,20 @@ private:
     FrozenFields frozen_;
     std::array<std::vector<double>, 3> d_s_;
     std::vector<double> phi_, tracer_;
-    long substeps_ = 0, segregation_steps_ = 0;
+    long split_steps_ = 0, solver_steps_ = 0;
     double max_excess_ = -std::numeric_limits<double>::infinity(), min_phi_ = std::numeric_limits<double>::infinity();
     double largest_bulk_clip_ = 0.0;
     CoupledTimers timers_;
 
 public:
-    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: the flow, phi
+    /// Saves or restores (run/state_io.hpp) what a later step or a caller reads: the flow, phi
     /// and the tracer, the fields of the last segregation sub-step, the counts and extremes, the
     /// timers. The rest is set-up (built from the setup as before) or
     /// scratch of a step. A member added above that outlives a step belongs here too.
     void checkpoint(StateIO& io) {
         io("tumbler.flow", flow_)("tumbler.segregation", segregation_)("tumbler.frozen", frozen_)("tumbler.d_s", d_s_);
-        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.substeps", substeps_);
-        io("tumbler.segregation_steps", segregation_steps_)("tumbler.max_excess", max_excess_)("tumbler.min_phi", min_phi_);
+        io("tumbler.phi", phi_)("tumbler.tracer", tracer_)("tumbler.substeps", split_steps_);
+        io("tumbler.segregation_steps", solver_steps_)("tumbler.max_excess", max_excess_)("tumbler.min_phi", min_phi_);
         io("tumbler.largest_bulk_clip", largest_bulk_clip_)("tumbler.timers", timers_);
     }
 };

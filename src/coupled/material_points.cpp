@@ -1,4 +1,4 @@
-#include "tumbler/material_points.hpp"
+#include "coupled/material_points.hpp"
 
 #include "core/threads.hpp"
 

@@ -15,7 +15,7 @@
 #pragma once
 
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 
 #include <functional>
 #include <vector>
@@ -47,7 +47,7 @@ private:
     std::vector<unsigned char> marked_;
 
 public:
-    /// Saves or restores (core/state_io.hpp) the points.
+    /// Saves or restores (run/state_io.hpp) the points.
     void checkpoint(StateIO& io) { io("points.x", x_)("points.z", z_)("points.marked", marked_); }
 };
 

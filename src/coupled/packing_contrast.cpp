@@ -1,4 +1,4 @@
-#include "tumbler/packing_contrast.hpp"
+#include "coupled/packing_contrast.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,8 +16,8 @@
 // bins (the "noise" the contrast is compared with).
 #pragma once
 
-#include "core/state_io.hpp"
-#include "tumbler/coupled_tumbler.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "run/state_io.hpp"
 
 namespace granseg {
 
@@ -37,7 +37,7 @@ struct PackingContrast {
 };
 
 /// The contrast of the tumbler's current state; surface_angle_deg: the fitted free-surface angle
-/// (flow_output.hpp drum_state) against the horizontal.
+/// (drum/drum_state.hpp) against the horizontal.
 PackingContrast packing_contrast(const CoupledTumbler& tumbler, double surface_angle_deg, const PackingContrastOptions& options);
 
 }  // namespace granseg

@@ -1,4 +1,4 @@
-#include "flow_run/bed.hpp"
+#include "drum/bed.hpp"
 
 #include "closures/closures.hpp"
 #include "core/error.hpp"

@@ -1,5 +1,5 @@
 // Geometry and initial states of granular beds for the flow scenes: a drum (the circle of
-// Sect. 4.2, or any core/drum_shape.hpp cross-section) as embedded walls, and a bed at rest in the static (lithostatic) balance
+// Sect. 4.2, or any drum/drum_shape.hpp cross-section) as embedded walls, and a bed at rest in the static (lithostatic) balance
 // dp/dz = -Phi |g| with p = p(Phi, T) from eqs. (15)-(19) (docs/assumptions.md F6).
 //
 //   solves      the lithostatic balance dp/dz = -Phi(p) |g| column by column (RK4), and p(Phi) = p
@@ -9,8 +9,8 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
+#include "drum/drum_shape.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
-#include "tumbler/drum.hpp"
+#include "drum/drum.hpp"
 
 #include "closures/closures.hpp"
-#include "flow_run/bed.hpp"
+#include "drum/bed.hpp"
 
 #include <algorithm>
 #include <cmath>

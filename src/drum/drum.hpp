@@ -1,6 +1,6 @@
 // The drum of Sect. 4.2 as the flow solver sees it, shared by the scene kinds tumbler-flow (flow
 // alone) and tumbler (flow and segregation coupled): the geometry and rotation (a circle, or a
-// regular polygon: core/drum_shape.hpp, docs/drum_shapes.md), the bed at rest it starts from
+// regular polygon: drum/drum_shape.hpp, docs/drum_shapes.md), the bed at rest it starts from
 // (docs/assumptions.md F6, F8), and the dynamic angle of repose.
 //
 //   solves      nothing over time: the drum's geometry and the bed at rest it starts from
@@ -10,10 +10,10 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "drum/drum_shape.hpp"
 #include "flow/flow_solver.hpp"
+#include "run/state_io.hpp"
 
 #include <array>
 #include <cmath>
@@ -39,12 +39,12 @@ struct DrumSpec {
     DrumShape cross_section() const;
     /// The drum frame: gravity, rotation at 2 pi rps about the drum axis through the origin.
     Frame frame() const;
-    /// The staircase drum on cells of side diameter/cells_per_diameter (flow_run/bed.hpp drum_grid).
+    /// The staircase drum on cells of side diameter/cells_per_diameter (drum/bed.hpp drum_grid).
     Grid grid() const;
     /// Height of the flat initial surface above the drum's centre.
     double surface_height() const { return cross_section().lowest() + fill_height; }
     /// Speed relative to the drum above which material counts as flowing: 5 % of the wall speed
-    /// (0 for a drum at rest, whose flowing share and layer drum_state then reports as NaN).
+    /// (0 for a drum at rest, whose flowing share and layer drum_state (drum/drum_state.hpp) then reports as NaN).
     double flowing_speed() const { return 0.05 * std::fabs(2.0 * M_PI * rps) * radius(); }
 };
 
@@ -55,7 +55,7 @@ struct DrumSpec {
 double closest_surface_distance(const DrumSpec& drum);
 
 /// The free surface of the diagnostics is the level Phi = Phi_co(phi_hat)/2, half-way between
-/// the empty drum and the loosest bed of the mixture (flow_output.hpp drum_state).
+/// the empty drum and the loosest bed of the mixture (drum/drum_state.hpp).
 inline double surface_level(const Material& material, double phi_hat) { return 0.5 * material.packing.Phi_co(phi_hat); }
 
 /// How long a drum runs and what it writes on the way (the [run] keys, docs/scenes.md).
@@ -71,7 +71,7 @@ constexpr double kDrumHistoryInterval = 0.05;
 
 /// Phi per cell of the bed at rest before the drum turns: the lithostatic balance under |g| along
 /// -z with the flat surface at the fill height, T = T, for the uniform mixture phi_hat
-/// (Phi_rcp(phi_hat), Phi_co(phi_hat); flow_run/bed.hpp lithostatic_bed).
+/// (Phi_rcp(phi_hat), Phi_co(phi_hat); drum/bed.hpp lithostatic_bed).
 std::vector<double> drum_bed_at_rest(const DrumSpec& drum, const Grid& grid, const Material& material, double phi_hat, double T);
 
 /// The bed at rest of a mixture that varies from cell to cell, for packing feedback: the bed of
@@ -96,7 +96,7 @@ public:
     double mean() const;
     double std_dev() const;  // 0 for one sample, NaN for none (as mean())
     long samples() const;
-    /// Saves or restores (core/state_io.hpp) the samples; `from` stays the constructor's.
+    /// Saves or restores (run/state_io.hpp) the samples; `from` stays the constructor's.
     void checkpoint(StateIO& io) { io("average.t", t_)("average.value", value_); }
 
 private:

@@ -1,4 +1,4 @@
-#include "core/drum_shape.hpp"
+#include "drum/drum_shape.hpp"
 
 #include "core/error.hpp"
 

@@ -1,7 +1,7 @@
 // The cross-section of a rotating drum in the frame that turns with it: the circle of Sect. 4.2 or
 // a regular polygon (the square and triangular drums of the segregation literature,
 // docs/drum_shapes.md). The axis is the origin; the solver sees a drum as its inside cells
-// (tumbler/drum.hpp), the diagnostics as exact areas and lengths (core/plane_geometry.hpp).
+// (drum/drum.hpp), the diagnostics as exact areas and lengths (drum/plane_geometry.hpp).
 //
 //   solves      nothing over time: inside tests, areas, chords, the free surface's distance
 //   inputs      the radius R of the circle through the corners; sides and orientation of a polygon
@@ -13,7 +13,7 @@
 // under x -> -x.
 #pragma once
 
-#include "core/plane_geometry.hpp"
+#include "drum/plane_geometry.hpp"
 
 namespace granseg {
 

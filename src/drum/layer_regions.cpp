@@ -1,6 +1,6 @@
-#include "tumbler/layer_regions.hpp"
+#include "drum/layer_regions.hpp"
 
-#include "tumbler/region_weights.hpp"
+#include "drum/region_weights.hpp"
 
 #include <algorithm>
 #include <limits>

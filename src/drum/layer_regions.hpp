@@ -8,7 +8,7 @@
 //   periphery  r >= 0.8 R:           next to the wall (as pattern_metrics.hpp, assumption T4)
 //   axis       r < axis_radius:      the innermost part of the core
 // with d the free surface's distance from the axis, and every bed cell (Phi > bed_level) counted by
-// the exact share of its area inside the region (tumbler/region_weights.hpp), so that a region's
+// the exact share of its area inside the region (drum/region_weights.hpp), so that a region's
 // area does not jump as its circle crosses cell centres and is the same on grids of either parity.
 //
 //   solves      nothing over time: shares of small particles in four regions
@@ -18,7 +18,7 @@
 #pragma once
 
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "tumbler/pattern_metrics.hpp"
+#include "drum/pattern_metrics.hpp"
 
 #include "segregation/reconstruction.hpp"
 

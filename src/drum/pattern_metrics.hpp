@@ -13,9 +13,9 @@
 // into pure small and pure large cells (Danckwerts' intensity of segregation).
 #pragma once
 
-#include "core/drum_shape.hpp"
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "drum/drum_shape.hpp"
+#include "run/state_io.hpp"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "core/plane_geometry.hpp"
+#include "drum/plane_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Exact areas in the x-z plane: how much of a grid cell (a rectangle) lies inside a disc, a convex
 // polygon or a half-plane. The drum diagnostics weigh each cell by the share of its area inside a
-// region (tumbler/region_weights.hpp), and a drum of any cross-section is a set of such areas
-// (core/drum_shape.hpp).
+// region (drum/region_weights.hpp), and a drum of any cross-section is a set of such areas
+// (drum/drum_shape.hpp).
 //
 //   solves      nothing over time: areas of intersections, exact up to round-off
 //   inputs      polygons (vertices counter-clockwise), discs (centre, radius), half-planes

@@ -1,7 +1,7 @@
-#include "tumbler/region_weights.hpp"
+#include "drum/region_weights.hpp"
 
 #include "core/error.hpp"
-#include "core/plane_geometry.hpp"
+#include "drum/plane_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

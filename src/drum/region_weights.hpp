@@ -1,5 +1,5 @@
 // Regions of a drum cross-section weighed by exact areas: the share of each grid cell's area that
-// lies inside a disc or an annulus about the drum axis (core/plane_geometry.hpp), and the
+// lies inside a disc or an annulus about the drum axis (drum/plane_geometry.hpp), and the
 // small-particle fraction of a region with each cell counted by that share. A cell cut by the
 // region's circle counts with the part of its area inside, where pattern_metrics.hpp counts the
 // whole cell by its centre; on a refined grid both tend to the same region, the weighted one

@@ -5,11 +5,11 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/threads.hpp"
+#include "flow/diffusion/viscosity.hpp"
+#include "flow/faces/convection.hpp"
+#include "flow/faces/loads.hpp"
+#include "flow/fields/primitives.hpp"
 #include "flow/velocity_gradient.hpp"
-#include "flow_diffusion/viscosity.hpp"
-#include "flow_faces/convection.hpp"
-#include "flow_faces/loads.hpp"
-#include "flow_fields/primitives.hpp"
 
 #include <cmath>
 #include <functional>
@@ -28,13 +28,6 @@ double FlowTimers::total() const {
     double sum = 0.0;
     for (double s : seconds) sum += s;
     return sum;
-}
-
-FlowSolver::Stopwatch::Stopwatch(FlowTimers& timers, FlowStage stage)
-    : account_(timers.seconds[static_cast<int>(stage)]), start_(std::chrono::steady_clock::now()) {}
-
-FlowSolver::Stopwatch::~Stopwatch() {
-    account_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Frame frame)

@@ -2,37 +2,37 @@
 // eqs. 10-11 and the closures of eqs. 15-20). Walk-through: docs/flow_solver.md.
 //
 //   solves      eqs. (8), (9), (14) step by step, first order in time and space, in the x-z plane,
-//               a column or a slab, with embedded walls, in a frame that may turn (flow_fields/frame.hpp)
+//               a column or a slab, with embedded walls, in a frame that may turn (flow/fields/frame.hpp)
 //   inputs      Grid, Material, FlowSettings, Frame; the state (set_state), optionally phi_hat per
 //               cell, wall velocities of the domain boundary, sources
 //   outputs     the state after each step and the coupling hand-over below
 //   invariants  Phi_new = Phi_old - dt div M in every inside cell; finite Phi >= 0, T >= 0 and u;
 //               Phi < Phi_rcp (a step that breaks one throws InvariantError)
 //
-// FlowSolver owns the state (flow_fields/flow_state.hpp) and runs a step as a list of stages, each a
+// FlowSolver owns the state (flow/fields/flow_state.hpp) and runs a step as a list of stages, each a
 // private member function that calls free kernels with const inputs (Lie splitting). A stage's
 // label is the name of its timer (FlowStage, the summaries' seconds_LABEL), the same in the
 // driver (semi_implicit_step.cpp) and docs/flow_solver.md.
 // Both modes:
 //   closures: Phi_before = Phi; primitives u, T and the closures at t^n
-//      (flow_fields/primitives.hpp, flow_faces/loads.hpp);
+//      (flow/fields/primitives.hpp, flow/faces/loads.hpp);
 //   ...the mode's stages...
 //   temperature: heating (3/2) eta kappa:kappa, dissipation eps Phi T and conduction
 //      (3/2) div(lambda grad T) implicit in one sparse system (T relaxes towards
-//      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow_diffusion/temperature.hpp).
+//      (3/2)(eta0/eps0) kappa:kappa, eq. 45); T >= T_floor (flow/diffusion/temperature.hpp).
 // Explicit step (time_stepping = "explicit", explicit_step):
 //   forces: gravity at t^n (dt follows from these forces); per active axis the face potentials and
-//       the unsupported loads (flow_faces/loads.hpp) and the HLLC face fluxes with hydrostatic reconstruction
-//       (flow_faces/convection.hpp, flow_faces/hllc.hpp); the effective pressure of eta, lambda, eps Phi
-//       (flow_fields/primitives.hpp);
+//       the unsupported loads (flow/faces/loads.hpp) and the HLLC face fluxes with hydrostatic reconstruction
+//       (flow/faces/convection.hpp, flow/faces/hllc.hpp); the effective pressure of eta, lambda, eps Phi
+//       (flow/fields/primitives.hpp);
 //   step_size: dt from a CFL condition on |u_n| + c, from the cells' outflow (so Phi stays > 0
 //       and T, u_t stay convex combinations) and their compaction (so Phi stays < Phi_rcp)
 //       (flow/time_step.hpp);
 //   predictor: the conservative update, body forces along inactive or periodic axes, optional
-//       sources, Coriolis rotation of u over dt (exact) (explicit_update, flow_faces/convection.hpp);
+//       sources, Coriolis rotation of u over dt (exact) (explicit_update, flow/faces/convection.hpp);
 //   viscosity: implicit viscosity d(Phi u)/dt = div(eta grad u), all axes in one system or split
-//       by axis into line solves (flow_diffusion/coupled_viscosity.hpp, flow_diffusion/viscosity.hpp).
-// Semi-implicit step (the default, semi_implicit_step; kernels in flow_faces/semi_implicit_faces.hpp):
+//       by axis into line solves (flow/diffusion/coupled_viscosity.hpp, flow/diffusion/viscosity.hpp).
+// Semi-implicit step (the default, semi_implicit_step; kernels in flow/faces/semi_implicit_faces.hpp):
 //   step_size: dt from the material speeds |u_n|, |U| and the outflow and compaction of the last
 //       step's fluxes, at most kStepGrowth times the last dt (flow/time_step.hpp);
 //   forces: forces of the state at t^n with gravity at t^n + dt/2 (it turns in the drum frame):
@@ -46,11 +46,11 @@
 //       of momentum and Phi T; again (at most 4 solves) while the pressure reversed faces onto
 //       a cell holding clearly less; then the outflow and compaction bounds checked on these
 //       fluxes (the reconstruction's face values, transport = muscl, are timed as transport);
-//   pressure_solve: the Newton solve for the pressure increments dp (flow_pressure/pressure_solver.hpp);
+//   pressure_solve: the Newton solve for the pressure increments dp (flow/pressure/pressure_solver.hpp);
 //   repeat: a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the
 //       dt, again from predictor;
 //   transport: Phi_new = Phi - dt div M exactly, Phi u and Phi T with the donors' values
-//       (transport_update, flow_faces/convection.hpp);
+//       (transport_update, flow/faces/convection.hpp);
 //   increments: the velocity change since u* diffused by the viscosity's solve with walls at
 //       rest (the solve is linear): u = u* + V0(u - u*).
 // Walls: no-slip (moving domain-boundary walls allowed), adiabatic, no mass flux. An axis with
@@ -94,21 +94,21 @@
 
 #include "closures/material.hpp"
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "core/stopwatch.hpp"
+#include "flow/diffusion/coupled_viscosity.hpp"
+#include "flow/diffusion/diffusion_lines.hpp"
+#include "flow/diffusion/temperature.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
+#include "flow/fields/frame.hpp"
+#include "flow/pressure/pressure_solver.hpp"
 #include "flow/time_step.hpp"
-#include "flow_diffusion/coupled_viscosity.hpp"
-#include "flow_diffusion/diffusion_lines.hpp"
-#include "flow_diffusion/temperature.hpp"
-#include "flow_faces/semi_implicit_faces.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
-#include "flow_fields/frame.hpp"
-#include "flow_pressure/pressure_solver.hpp"
+#include "run/state_io.hpp"
 #include "transport/muscl_hancock.hpp"
 
 #include <array>
-#include <chrono>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -203,15 +203,10 @@ public:
     const FlowCounters& counters() const { return counters_; }
 
 private:
-    /// Adds the wall-clock time of its scope to one stage of timers_.
-    class Stopwatch {
+    /// Adds the wall-clock time of its scope to one stage of timers_ (core/stopwatch.hpp).
+    class Stopwatch : granseg::Stopwatch {
     public:
-        Stopwatch(FlowTimers& timers, FlowStage stage);
-        ~Stopwatch();
-
-    private:
-        double& account_;
-        std::chrono::steady_clock::time_point start_;
+        Stopwatch(FlowTimers& timers, FlowStage stage) : granseg::Stopwatch(timers.seconds[static_cast<int>(stage)]) {}
     };
 
     // Both modes (flow_solver.cpp).
@@ -314,7 +309,7 @@ private:
     FlowCounters counters_;
 
 public:
-    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads: time, steps,
+    /// Saves or restores (run/state_io.hpp) what a later step or a caller reads: time, steps,
     /// the last dt and its bound, the state, phi_hat, the hand-over (Phi_before_, the last step's
     /// faces, which also bound the next dt), the pressure's and the temperature's warm starts,
     /// counters and timers. The rest is scratch that a step writes before it reads it, or set-up

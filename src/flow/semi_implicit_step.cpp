@@ -1,13 +1,13 @@
 // FlowSolver's semi-implicit step (docs/flow_solver.md Sect. 2): the driver and its stages. The
-// kernels are in flow_faces/semi_implicit_faces.hpp; the stage list and what each stage reads and writes are
+// kernels are in flow/faces/semi_implicit_faces.hpp; the stage list and what each stage reads and writes are
 // in the header comment of flow/flow_solver.hpp.
 #include "flow/flow_solver.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "flow_diffusion/viscosity.hpp"
-#include "flow_faces/convection.hpp"
-#include "flow_fields/primitives.hpp"
+#include "flow/diffusion/viscosity.hpp"
+#include "flow/faces/convection.hpp"
+#include "flow/fields/primitives.hpp"
 
 #include <algorithm>
 

@@ -3,8 +3,8 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/threads.hpp"
-#include "flow_faces/semi_implicit_faces.hpp"
-#include "flow_fields/face_balance.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
+#include "flow/fields/face_balance.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -21,9 +21,9 @@
 // is broken).
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
 
 namespace granseg {
 
@@ -44,7 +44,7 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
 
 /// The rates of the semi-implicit step: material speeds |u_n| of the cells and |U| (faces.speed)
 /// of the last step's faces, twice the outflow rate of the last step's mass fluxes, without
-/// dust cells (their outflow is capped, flow_faces/semi_implicit_faces.hpp, assumption F11), and their
+/// dust cells (their outflow is capped, flow/faces/semi_implicit_faces.hpp, assumption F11), and their
 /// compaction rate. The first
 /// step also counts the sound speed, as the explicit step does: it starts from a state that need
 /// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step).

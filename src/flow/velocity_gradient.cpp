@@ -1,6 +1,6 @@
 #include "flow/velocity_gradient.hpp"
 
-#include "flow_diffusion/diffusion_faces.hpp"
+#include "flow/diffusion/diffusion_faces.hpp"
 
 namespace granseg {
 

@@ -4,15 +4,15 @@
 //   solves      nothing: d u_b/d x_a by central differences in every inside cell
 //   inputs      Phi, u per cell, the velocities of the domain-boundary walls
 //   outputs     the nine components per cell
-//   invariants  walls and empty neighbours by the rules of flow_diffusion/diffusion_faces.hpp
+//   invariants  walls and empty neighbours by the rules of flow/diffusion/diffusion_faces.hpp
 //
 // d u_b/d x_a by central differences; a wall contributes the no-slip ghost 2 U_wall - u (U_wall
 // the domain-boundary wall's velocity, 0 on embedded walls), an empty neighbour (free surface)
 // the cell's own value, an inactive axis 0.
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
 
 #include <array>
 #include <vector>

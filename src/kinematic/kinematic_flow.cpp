@@ -1,4 +1,4 @@
-#include "tumbler/kinematic_flow.hpp"
+#include "kinematic/kinematic_flow.hpp"
 
 #include "core/error.hpp"
 #include "segregation/bulk_transport.hpp"

@@ -1,8 +1,7 @@
-#include "tumbler/tumbler_run.hpp"
+#include "kinematic/kinematic_run.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "core/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,12 +30,20 @@ void merge(BoundsMonitor& run, const BoundsMonitor& step) {
     run.nonfinite += step.nonfinite;
 }
 
+/// The sample and frame times of a run from t0 to t_end: every (t_end - t0)/samples and
+/// (t_end - t0)/frames, the last of each t_end itself.
+struct SampleTimes {
+    double t0, t_end;
+    int samples, frames;
+    double sample(int n) const { return n == samples ? t_end : t0 + (t_end - t0) * n / samples; }
+    double frame(int n) const { return n == frames ? t_end : t0 + (t_end - t0) * n / frames; }
+};
+
 /// A resumed run continues on the sample and frame times of this run: the last ones the checkpoint
 /// recorded must be this run's (an extension to a later t_end keeps their spacing: t_end/samples
 /// and t_end/frames as in the run that wrote it). InputError otherwise.
-void check_continuation(const std::string& file, const TumblerRunResult& result, int next_sample,
-                        const std::function<double(int)>& sample_time, int next_frame,
-                        const std::function<double(int)>& frame_time) {
+void check_continuation(const std::string& file, const KinematicRunResult& result, const SampleTimes& times, int next_sample,
+                        int next_frame) {
     const auto check = [&](const char* key, double recorded, double here, double spacing) {
         if (recorded != here)
             throw InputError(file + ": [output] " + key + ": the checkpoint's last one is at t = " + format_exact(recorded) +
@@ -44,75 +51,118 @@ void check_continuation(const std::string& file, const TumblerRunResult& result,
                              format_exact(spacing) + " s, up to the new t_end)");
     };
     const auto& h = result.history;
-    if (h.size() >= 2) check("samples", h.back().t, sample_time(next_sample - 1), h[1].t - h[0].t);
+    if (h.size() >= 2) check("samples", h.back().t, times.sample(next_sample - 1), h[1].t - h[0].t);
     const auto& f = result.frames;
-    if (!f.empty()) check("frames", f.back().t, frame_time(next_frame - 1), f.size() >= 2 ? f[1].t - f[0].t : f[0].t - h[0].t);
+    if (!f.empty()) check("frames", f.back().t, times.frame(next_frame - 1), f.size() >= 2 ? f[1].t - f[0].t : f[0].t - h[0].t);
 }
+
+/// What KinematicTumbler::step calls after its bulk step, with phi at that point.
+using BulkObserver = std::function<void(const std::vector<double>& phi)>;
+
+/// What a kinematic run records as it goes: steps that land on the sample and frame times, the
+/// pattern metrics at each sample time with the invariants checked there, and phi_hat at each
+/// frame time.
+class KinematicRecord {
+public:
+    KinematicRecord(KinematicTumbler& tumbler, const KinematicRunOptions& options, KinematicRunResult& result)
+        : tumbler_(tumbler),
+          options_(options),
+          result_(result),
+          Phi_(tumbler.Phi()),
+          Phi_max_(*std::max_element(Phi_.begin(), Phi_.end())),
+          times_{tumbler.time(), options.t_end, options.samples, options.frames} {
+        result.phi_hat_initial = composition_field(tumbler.grid(), tumbler.phi(), Phi_);
+        result.mass_start = total_amount(tumbler.grid(), tumbler.phi());
+    }
+    bool done() const { return next_sample_ > options_.samples; }
+    /// A fresh run's first record, or a resumed run's check that it continues this one.
+    void begin(bool resumed, const RunCheckpoints* checkpoints) {
+        if (resumed)
+            check_continuation(checkpoints->path(), result_, times_, next_sample_, next_frame_);
+        else
+            record(times_.t0);
+    }
+    /// One step of the tumbler, shortened to land on the next sample or frame time.
+    void step(const BulkObserver& after_bulk) {
+        const double remaining = target() - tumbler_.time();
+        lands_ = remaining <= tumbler_.time_step();
+        tumbler_.step(lands_ ? remaining : tumbler_.time_step(), after_bulk);
+    }
+    /// The frame and the sample the last step landed on.
+    void land() {
+        if (!lands_) return;
+        const double at = target();
+        if (t_frame() == at && next_frame_ <= options_.frames) {
+            result_.frames.push_back({at, composition_field(tumbler_.grid(), tumbler_.phi(), Phi_)});
+            ++next_frame_;
+        }
+        if (t_sample() != at) return;
+        record(at);
+        result_.after_segregation.observe(tumbler_.grid(), tumbler_.phi(), Phi_);  // finite values; the clip keeps the bounds
+        check_segregation_invariants("tumbler-kinematic", result_.after_segregation, tumbler_.largest_correction(),
+                                     result_.mass_start, total_amount(tumbler_.grid(), tumbler_.phi()), result_.mass_start,
+                                     kAmountTolerance, true, Phi_max_);
+        ++next_sample_;
+    }
+    double Phi_max() const { return Phi_max_; }
+    void checkpoint(StateIO& io) { io("result", result_)("next_sample", next_sample_)("next_frame", next_frame_); }
+
+private:
+    // The next sample and frame times; a run without frames has none: the sample time stands in.
+    double t_sample() const { return times_.sample(next_sample_); }
+    double t_frame() const { return next_frame_ <= options_.frames ? times_.frame(next_frame_) : t_sample(); }
+    double target() const { return std::min(t_sample(), t_frame()); }
+    void record(double t) {
+        result_.history.push_back(
+            {t, pattern_metrics(tumbler_.grid(), tumbler_.phi(), Phi_, options_.regions, result_.phi_hat_initial)});
+    }
+
+    KinematicTumbler& tumbler_;
+    const KinematicRunOptions& options_;
+    KinematicRunResult& result_;
+    const std::vector<double>& Phi_;
+    const double Phi_max_;
+    const SampleTimes times_;
+    int next_sample_ = 1, next_frame_ = 1;
+    bool lands_ = false;  // the last step ended on the next sample or frame time
+};
 
 }  // namespace
 
-TumblerRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const TumblerRunOptions& options,
-                                       const TumblerStepObserver& observer, RunCheckpoints* checkpoints) {
+KinematicRunResult run_kinematic_tumbler(KinematicTumbler& tumbler, const KinematicRunOptions& options,
+                                         const KinematicStepObserver& observer, RunCheckpoints* checkpoints) {
     if (!(options.t_end > tumbler.time()) || options.samples < 1 || options.frames < 0)
         throw InputError("tumbler run: needs t_end > t, samples >= 1, frames >= 0");
-    const Grid& grid = tumbler.grid();
-    const std::vector<double>& Phi = tumbler.Phi();
-    const double Phi_max = *std::max_element(Phi.begin(), Phi.end());
-    TumblerRunResult result;
-    result.phi_hat_initial = composition_field(grid, tumbler.phi(), Phi);
-    result.mass_start = total_amount(grid, tumbler.phi());
-    const auto record = [&](double t) {
-        result.history.push_back({t, pattern_metrics(grid, tumbler.phi(), Phi, options.regions, result.phi_hat_initial)});
-    };
-    const double t0 = tumbler.time(), span = options.t_end - t0;
-    int next_sample = 1, next_frame = 1;
-    // Steps land on the sample and frame times, so the state at t_end is on the path of a longer
-    // run with the same spacing: no state is kept before the last step (longest step 0).
-    RunCheckpoints& saves = checkpoints_or_none(checkpoints);
-    const RunState state = [&](StateIO& io) {
-        io("kinematic", tumbler)("result", result)("next_sample", next_sample)("next_frame", next_frame);
-    };
-    const auto sample_time = [&](int n) { return n == options.samples ? options.t_end : t0 + span * n / options.samples; };
-    const auto frame_time = [&](int n) { return n == options.frames ? options.t_end : t0 + span * n / options.frames; };
-    if (!saves.resume(options.t_end, state))
-        record(t0);
-    else
-        check_continuation(saves.path(), result, next_sample, sample_time, next_frame, frame_time);
-    Progress progress("tumbler-kinematic", options.t_end, tumbler.time());
+    KinematicRunResult result;
+    KinematicRecord record(tumbler, options, result);
     BoundsMonitor step_bulk;
     std::vector<double> phi_after_bulk;  // kept only for an observer
-    const auto after_bulk = [&](const std::vector<double>& phi) {
+    const BulkObserver after_bulk = [&](const std::vector<double>& phi) {
         step_bulk = BoundsMonitor{};
-        step_bulk.observe(grid, phi, Phi);
+        step_bulk.observe(tumbler.grid(), phi, tumbler.Phi());
         if (observer) phi_after_bulk.assign(phi.begin(), phi.end());
     };
-    while (next_sample <= options.samples) {
-        const double t_sample = sample_time(next_sample);
-        const double t_frame = next_frame <= options.frames ? frame_time(next_frame) : t_sample;
-        const double target = std::min(t_sample, t_frame), remaining = target - tumbler.time();
-        const bool lands = remaining <= tumbler.time_step();  // this step ends at the target
-        tumbler.step(lands ? remaining : tumbler.time_step(), after_bulk);
-        check_bulk_bounds(step_bulk, Phi_max, tumbler.time());
+    // Steps land on the sample and frame times, so the state at t_end is on the path of a longer
+    // run with the same spacing: no state is kept before the last step (no longest_step).
+    RunLoop loop;
+    loop.label = "tumbler-kinematic", loop.t_end = options.t_end, loop.checkpoints = checkpoints;
+    loop.state = [&](StateIO& io) {
+        io("kinematic", tumbler);
+        record.checkpoint(io);
+    };
+    loop.time = [&] { return tumbler.time(); };
+    loop.steps = [&] { return tumbler.steps(); };
+    loop.done = [&] { return record.done(); };
+    loop.begin = [&](bool resumed) { record.begin(resumed, checkpoints); };
+    loop.step = [&] { record.step(after_bulk); };
+    loop.observers.push_back([&] {
+        check_bulk_bounds(step_bulk, record.Phi_max(), tumbler.time());
         merge(result.after_bulk, step_bulk);
         if (observer) observer(tumbler, step_bulk, phi_after_bulk);
-        if (lands && t_frame == target && next_frame <= options.frames) {
-            result.frames.push_back({target, composition_field(grid, tumbler.phi(), Phi)});
-            ++next_frame;
-        }
-        if (lands && t_sample == target) {
-            record(target);
-            result.after_segregation.observe(grid, tumbler.phi(), Phi);  // finite values; the clip keeps the bounds
-            check_segregation_invariants("tumbler-kinematic", result.after_segregation, tumbler.largest_correction(),
-                                         result.mass_start, total_amount(grid, tumbler.phi()), result.mass_start,
-                                         kTumblerMassTolerance, true, Phi_max);
-            ++next_sample;
-        }
-        progress.update(tumbler.time());
-        saves.after_step(tumbler.time(), tumbler.steps(), state);
-    }
-    saves.finish(tumbler.time(), tumbler.steps(), state);
-    progress.finish();
-    result.mass_end = total_amount(grid, tumbler.phi());
+    });
+    loop.observers.push_back([&] { record.land(); });
+    run_loop(loop);
+    result.mass_end = total_amount(tumbler.grid(), tumbler.phi());
     return result;
 }
 

@@ -1,4 +1,4 @@
-#include "tumbler/tumbler_tables.hpp"
+#include "kinematic/kinematic_tables.hpp"
 
 #include "core/format.hpp"
 
@@ -27,19 +27,7 @@ DataTable drum_outline(const RollingDrumFlow& flow) {
     return outline;
 }
 
-DataTable composition_cells(const Grid& grid, const std::vector<double>& phi_hat, const std::string& what,
-                            const std::function<bool(std::size_t)>& bed, const InertialPosition& where) {
-    DataTable cells;
-    cells.comment(what + " (bed cells, inertial frame, m; cell size " + format_number(grid.h[0]) + " m)");
-    for_each_bed_cell(grid, [&](const BedCell& b) {
-        if (bed && !bed(b.c)) return;
-        const std::array<double, 2> xz = where ? where(b.x, b.z) : std::array<double, 2>{b.x, b.z};
-        cells.row({{"x", xz[0]}, {"z", xz[1]}, {"phi_hat", phi_hat[b.c]}});
-    });
-    return cells;
-}
-
-DataTable tumbler_flow_cells(const KinematicTumbler& tumbler) {
+DataTable kinematic_flow_cells(const KinematicTumbler& tumbler) {
     const Grid& g = tumbler.grid();
     const RollingDrumFields& f = tumbler.fields();
     DataTable cells;
@@ -62,13 +50,13 @@ DataTable tumbler_flow_cells(const KinematicTumbler& tumbler) {
     return cells;
 }
 
-DataTable tumbler_metrics(const TumblerRunResult& result, const PatternRegions& regions) {
+DataTable kinematic_metrics(const KinematicRunResult& result, const PatternRegions& regions) {
     DataTable table;
     table.comment(
         "segregation index = std(phi_hat over the bed)/sqrt(m (1 - m)); core, ring, periphery: sum(phi)/sum(Phi) for r < " +
         format_number(regions.r_core) + ", " + format_number(regions.r_core) + " <= r < " + format_number(regions.r_ring) +
         ", r >= " + format_number(regions.r_periphery) + " m; core_deviation = max |phi_hat - initial| in the core");
-    for (const TumblerRecord& r : result.history)
+    for (const KinematicSample& r : result.history)
         table.row({{"t", r.t},
                    {"index", r.metrics.index},
                    {"core", r.metrics.core},
@@ -79,7 +67,7 @@ DataTable tumbler_metrics(const TumblerRunResult& result, const PatternRegions& 
     return table;
 }
 
-DataTable tumbler_shells(const KinematicTumbler& tumbler, const TumblerRunResult& result, int shells) {
+DataTable kinematic_shells(const KinematicTumbler& tumbler, const KinematicRunResult& result, int shells) {
     const Grid& g = tumbler.grid();
     std::vector<double> phi0(g.cells());
     for (std::size_t c = 0; c < g.cells(); ++c) phi0[c] = result.phi_hat_initial[c] * tumbler.Phi()[c];

@@ -1,4 +1,4 @@
-#include "tumbler/kinematic_tumbler.hpp"
+#include "kinematic/kinematic_tumbler.hpp"
 
 #include "closures/closures.hpp"
 #include "core/format.hpp"

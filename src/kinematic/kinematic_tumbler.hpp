@@ -25,11 +25,11 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/state_io.hpp"
+#include "kinematic/kinematic_flow.hpp"
+#include "run/state_io.hpp"
 #include "segregation/bulk_transport_fct.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/segregation_solver.hpp"
-#include "tumbler/kinematic_flow.hpp"
 
 #include <functional>
 #include <vector>
@@ -99,7 +99,7 @@ private:
     std::size_t bed_cells_ = 0;
 
 public:
-    /// Saves or restores (core/state_io.hpp) what a later step or a caller reads (the rest is
+    /// Saves or restores (run/state_io.hpp) what a later step or a caller reads (the rest is
     /// built from the setup, as before).
     void checkpoint(StateIO& io) {
         io("kinematic.phi", phi_)("kinematic.t", t_)("kinematic.steps", steps_)("kinematic.bulk_updates", bulk_updates_);

@@ -8,6 +8,24 @@
 
 namespace granseg {
 
+namespace {
+
+/// q = A p, the rows shared among the team.
+void team_product(Team& team, const Multilevel::Matrix& A, const double* p, double* q) {
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    const double* a = A.valuePtr();
+    team.share(A.rows(), [&](long begin, long end) {
+        for (long row = begin; row < end; ++row) {
+            double sum = 0.0;
+            for (int k = outer[row]; k < outer[row + 1]; ++k) sum += a[k] * p[inner[k]];
+            q[row] = sum;
+        }
+    });
+}
+
+}  // namespace
+
 CgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eigen::VectorXd& b, double tolerance,
                  Eigen::VectorXd& x) {
     const long n = A.rows(), max_iterations = 2 * n;
@@ -18,9 +36,6 @@ CgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eigen::
     // Eigen::ConjugateGradient's threshold.
     const double threshold = std::max(tolerance * tolerance * rhs2, std::numeric_limits<double>::min());
     Eigen::VectorXd r = b, p(n), q(n);
-    const int* outer = A.outerIndexPtr();
-    const int* inner = A.innerIndexPtr();
-    const double* a = A.valuePtr();
     double* xs = x.data();
     double* rs = r.data();
     double* ps = p.data();
@@ -40,13 +55,7 @@ CgResult team_cg(const Multilevel::Matrix& A, const Multilevel& B, const Eigen::
             double rz = team.dot(rs, ps, n);
             long i = 0;
             while (i < max_iterations) {
-                team.share(n, [&](long begin, long end) {
-                    for (long row = begin; row < end; ++row) {
-                        double sum = 0.0;
-                        for (int k = outer[row]; k < outer[row + 1]; ++k) sum += a[k] * ps[inner[k]];
-                        qs[row] = sum;
-                    }
-                });
+                team_product(team, A, ps, qs);
                 const double alpha = rz / team.dot(ps, qs, n);
                 team.share(n, [&](long begin, long end) {
                     for (long row = begin; row < end; ++row) xs[row] += alpha * ps[row], rs[row] -= alpha * qs[row];

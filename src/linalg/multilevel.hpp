@@ -8,7 +8,7 @@
 //   invariants  every level is again a diagonal plus a weighted graph Laplacian; new values
 //               re-add sums along maps built once, without allocation
 //
-// Used by the pressure solve (flow_pressure/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive
+// Used by the pressure solve (flow/pressure/pressure_solver.hpp, docs/flow_solver.md Sect. 2, pressure_solve): symmetric positive
 // definite matrices A = D + K on the cells of a Cartesian grid (D >= 0 diagonal, K a weighted graph Laplacian with faces of
 // weight 0, the inside cells of a drum an irregular part of the grid).
 //

@@ -1,4 +1,4 @@
-// A sparse LDL^T factorisation in supernodes, for the coupled viscosity (flow_diffusion/coupled_viscosity.hpp).
+// A sparse LDL^T factorisation in supernodes, for the coupled viscosity (flow/diffusion/coupled_viscosity.hpp).
 //
 //   solves      A x = b for a sparse symmetric positive definite A, by A = P^T L D L^T P with a
 //               fill-reducing P (approximate minimum degree, then a postorder of the elimination

@@ -28,6 +28,10 @@ constexpr std::size_t kBlock = 64;
 
 }  // namespace
 
+// Thomas factorisation of the tridiagonal part. A cyclic line takes the Numerical Recipes choice
+// gamma = -diag[0], which changes the first and the last pivot, and gets the correction vector
+// (gamma, 0, ..., 0, alpha) with alpha = -upper[n-1] (the coupling of cell n-1 to cell 0);
+// beta = -lower[0] couples cell 0 to cell n-1.
 void TridiagonalLines::factor(const Grid& grid, int axis, const std::vector<double>& lower, const std::vector<double>& diag,
                               const std::vector<double>& upper) {
     grid_ = &grid;
@@ -42,10 +46,6 @@ void TridiagonalLines::factor(const Grid& grid, int axis, const std::vector<doub
     ratio_.resize(cells);
     if (cyclic_) corner_lo_.resize(lines), denom_.resize(lines), z_.resize(cells);
     const std::size_t last = static_cast<std::size_t>(L.n - 1) * L.step, blocks = (L.n_inner + kBlock - 1) / kBlock;
-    // Thomas factorisation of the tridiagonal part. A cyclic line takes the Numerical Recipes
-    // choice gamma = -diag[0], which changes the first and the last pivot, and gets the
-    // correction vector (gamma, 0, ..., 0, alpha) with alpha = -upper[n-1] (the coupling of cell
-    // n-1 to cell 0); beta = -lower[0] couples cell 0 to cell n-1.
     parallel_for_pairs(parallel_, L.n_outer, blocks, [&](std::size_t o, std::size_t b) {
         const std::size_t q0 = b * kBlock, q1 = std::min(L.n_inner, q0 + kBlock);
         for (int m = 0; m < L.n; ++m) {

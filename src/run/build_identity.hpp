@@ -1,5 +1,5 @@
 // The identity of this build of granseg, which checkpoints carry so that a run resumes only in a
-// build that computes the same bits (core/checkpoint_file.hpp).
+// build that computes the same bits (run/checkpoint_file.hpp).
 #pragma once
 
 namespace granseg {

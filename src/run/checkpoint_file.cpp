@@ -1,4 +1,4 @@
-#include "core/checkpoint_file.hpp"
+#include "run/checkpoint_file.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
@@ -120,6 +120,40 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     if (dfd >= 0) ::fsync(dfd), ::close(dfd);
 }
 
+namespace {
+
+/// The named blocks of a checkpoint's payload: each its name's size, its name, its size and its
+/// bytes (sizes as 8-byte integers). InputError naming `path` if one overruns the payload.
+decltype(Checkpoint::blocks) blocks_of(std::string_view body, const std::string& path) {
+    decltype(Checkpoint::blocks) blocks;
+    std::size_t p = 0;
+    const auto need = [&](std::uint64_t bytes) {
+        if (body.size() - p < bytes)
+            throw InputError(path +
+                             ": corrupted: its blocks overrun the payload (allowed: a whole checkpoint written by granseg run)");
+    };
+    const auto take_u64 = [&] {
+        std::uint64_t v = 0;
+        need(sizeof v);
+        std::memcpy(&v, body.data() + p, sizeof v);
+        p += sizeof v;
+        return v;
+    };
+    while (p < body.size()) {
+        const std::uint64_t name_size = take_u64();
+        need(name_size);
+        std::string name(body.substr(p, name_size));
+        p += name_size;
+        const std::uint64_t size = take_u64();
+        need(size);
+        blocks.emplace_back(std::move(name), std::string(body.substr(p, size)));
+        p += size;
+    }
+    return blocks;
+}
+
+}  // namespace
+
 Checkpoint read_checkpoint(const std::string& path) {
     const auto fail = [&](const std::string& what) -> InputError {
         return InputError(path + ": " + what + " (allowed: a whole checkpoint written by granseg run)");
@@ -162,24 +196,7 @@ Checkpoint read_checkpoint(const std::string& path) {
     c.t = std::strtod(field["t"].c_str(), nullptr);
     c.steps = std::strtol(field["steps"].c_str(), nullptr, 10);
     c.finished = field["finished"] == "1";
-    std::size_t p = 0;
-    const auto take_u64 = [&] {
-        std::uint64_t v = 0;
-        if (payload - p < sizeof v) throw fail("corrupted: its blocks overrun the payload");
-        std::memcpy(&v, body.data() + p, sizeof v);
-        p += sizeof v;
-        return v;
-    };
-    while (p < payload) {
-        const std::uint64_t name_size = take_u64();
-        if (payload - p < name_size) throw fail("corrupted: its blocks overrun the payload");
-        std::string name(body.substr(p, name_size));
-        p += name_size;
-        const std::uint64_t size = take_u64();
-        if (payload - p < size) throw fail("corrupted: its blocks overrun the payload");
-        c.blocks.emplace_back(std::move(name), std::string(body.substr(p, size)));
-        p += size;
-    }
+    c.blocks = blocks_of(body, path);
     return c;
 }
 

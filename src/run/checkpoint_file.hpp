@@ -2,7 +2,7 @@
 // file, and read so that a wrong file is refused before any of it is used (docs/checkpoints.md).
 //
 //   solves      nothing: writes and reads the bytes of a checkpoint
-//   inputs      a Checkpoint (what wrote it, the time, named blocks of bytes: core/state_io.hpp)
+//   inputs      a Checkpoint (what wrote it, the time, named blocks of bytes: run/state_io.hpp)
 //   outputs     the file; on reading, the Checkpoint or one InputError line naming the file
 //   invariants  a file is replaced only by a whole new one (temporary file, fsync, rename, fsync
 //               of the directory); a file is read only if its length and checksum match its
@@ -12,7 +12,7 @@
 //     granseg checkpoint
 //     format 1
 //     kind tumbler                      the scene kind
-//     program 5d0c...                   the build (core/build_identity.hpp)
+//     program 5d0c...                   the build (run/build_identity.hpp)
 //     scene 81f2...                     the scene's fingerprint (SceneFile::fingerprint)
 //     t 9.99969                         the time of the state (17 digits) and the steps to it
 //     steps 12041

@@ -1,4 +1,4 @@
-#include "core/expression.hpp"
+#include "run/expression.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"

@@ -1,4 +1,4 @@
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 #include "core/error.hpp"
 

@@ -6,7 +6,7 @@
 // early (bad input, broken invariant) leaves no output at all.
 #pragma once
 
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 
 #include <initializer_list>
 #include <string>
@@ -55,7 +55,7 @@ public:
     std::size_t rows() const { return rows_; }
     /// The whole table as text.
     std::string str() const;
-    /// Saves or restores (core/state_io.hpp) the table so far.
+    /// Saves or restores (run/state_io.hpp) the table so far.
     void checkpoint(StateIO& io) {
         io("table.columns", columns_)("table.comments", comments_)("table.body", body_)("table.rows", rows_);
     }
@@ -79,7 +79,7 @@ public:
     /// Writes every file atomically, in the order added.
     void commit() const;
     const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
-    /// Saves or restores (core/state_io.hpp) the files so far.
+    /// Saves or restores (run/state_io.hpp) the files so far.
     void checkpoint(StateIO& io);
 
 private:

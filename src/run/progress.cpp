@@ -1,6 +1,6 @@
-#include "core/progress.hpp"
+#include "run/progress.hpp"
 
-#include <omp.h>
+#include "core/threads.hpp"
 
 #include <cstdio>
 #include <ctime>
@@ -9,7 +9,7 @@ namespace granseg {
 
 double run_cpu_seconds() {
     timespec t{};
-    clock_gettime(omp_get_max_threads() == 1 ? CLOCK_THREAD_CPUTIME_ID : CLOCK_PROCESS_CPUTIME_ID, &t);
+    clock_gettime(max_threads() == 1 ? CLOCK_THREAD_CPUTIME_ID : CLOCK_PROCESS_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 

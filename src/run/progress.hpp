@@ -14,7 +14,7 @@ namespace granseg {
 struct RunTime {
     double wall = 0.0, cpu = 0.0;
     int threads = 1;
-    /// This run's cost with the seconds of its earlier part (a resumed run, core/run_checkpoints.hpp).
+    /// This run's cost with the seconds of its earlier part (a resumed run, run/run_checkpoints.hpp).
     RunTime operator+(const RunTime& earlier) const { return {wall + earlier.wall, cpu + earlier.cpu, threads}; }
 };
 

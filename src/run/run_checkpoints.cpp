@@ -1,9 +1,9 @@
-#include "core/run_checkpoints.hpp"
+#include "run/run_checkpoints.hpp"
 
-#include "core/build_identity.hpp"
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "core/scene_file.hpp"
+#include "run/build_identity.hpp"
+#include "run/scene_file.hpp"
 
 #include <atomic>
 #include <csignal>
@@ -15,7 +15,7 @@ namespace granseg {
 
 namespace {
 
-/// Seconds of wall clock a run stays quiet about its checkpoints' cost (as core/progress.hpp).
+/// Seconds of wall clock a run stays quiet about its checkpoints' cost (as run/progress.hpp).
 constexpr double kQuietSeconds = 3.0;
 
 // SIGINT and SIGTERM while checkpointed runs are under way: the handler only records the signal

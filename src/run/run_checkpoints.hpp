@@ -4,13 +4,13 @@
 //
 //   solves      nothing: schedules and writes checkpoints of the state a runner lists
 //   inputs      CheckpointPlan (file, wall-clock interval, resume mode, the scene's identity); the
-//               runner's state as a function listing its members (core/state_io.hpp)
-//   outputs     the checkpoint file (core/checkpoint_file.hpp); on resuming, the restored state
+//               runner's state as a function listing its members (run/state_io.hpp)
+//   outputs     the checkpoint file (run/checkpoint_file.hpp); on resuming, the restored state
 //   invariants  writing a checkpoint changes nothing a later step reads, so a run with checkpoints
 //               computes the same bits as one without; a resumed run continues from a state its
 //               build, its scene kind and its scene's settings wrote, or is refused in one line
 //
-// A time loop calls, around each step from t:
+// The time loop, run_loop (run/run_loop.hpp), calls around each step from t:
 //     if (checkpoints.resume(t_end, state)) ... else ... start at t = 0
 //     while (t < t_end) { checkpoints.before_step(t, t_end, longest_step, state); step; ...;
 //                         checkpoints.after_step(t, steps, state); }
@@ -25,9 +25,9 @@
 // output files the states hold (StateIO::blob) go once into the block "files".
 #pragma once
 
-#include "core/checkpoint_file.hpp"
-#include "core/progress.hpp"
-#include "core/state_io.hpp"
+#include "run/checkpoint_file.hpp"
+#include "run/progress.hpp"
+#include "run/state_io.hpp"
 
 #include <chrono>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "core/scene_file.hpp"
+#include "run/scene_file.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"

@@ -11,7 +11,7 @@
 // output is written. The keys of each scene kind are documented in docs/scenes.md.
 #pragma once
 
-#include "core/expression.hpp"
+#include "run/expression.hpp"
 
 #include <limits>
 #include <memory>
@@ -87,7 +87,7 @@ public:
     /// Every key asked for so far with the value it resolved to (its default where the file has
     /// none), one line "[section] key = value" each, sorted; the keys in `ignored` (written
     /// "[section] key") left out. Two scene files with the same settings describe the same run
-    /// (checkpoints compare them, core/checkpoint_file.hpp).
+    /// (checkpoints compare them, run/checkpoint_file.hpp).
     std::string settings(const std::vector<std::string>& ignored = {}) const;
 
     /// Throws the one-line InputError "NAME: [section] key: what (allowed: allowed)".

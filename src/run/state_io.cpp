@@ -1,7 +1,7 @@
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 
-#include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
+#include "run/checkpoint_file.hpp"
 
 #include <cstdint>
 #include <cstring>

@@ -1,4 +1,4 @@
-// Saving and restoring the state of a run, for checkpoints (core/checkpoint_file.hpp,
+// Saving and restoring the state of a run, for checkpoints (run/checkpoint_file.hpp,
 // docs/checkpoints.md).
 //
 //   solves      nothing: turns the members of the classes of a run into bytes and back
@@ -17,7 +17,7 @@
 // an enum, a bool, a contiguous container of numbers (std::vector, std::string, Eigen vectors),
 // a std::array or a std::vector of members, or a class with its own checkpoint(StateIO&) (it
 // lists its members in turn). A member added to a class that the next step reads goes into its list as well: the
-// kill-and-resume checks (verify_resume, tests/test_checkpoint.cpp) compare a resumed run with an
+// kill-and-resume checks (verify_resume, tests/run/checkpoint.cpp) compare a resumed run with an
 // uninterrupted one bit for bit and catch one forgotten.
 #pragma once
 

@@ -24,20 +24,7 @@ struct ClosureSweep : SceneJob {
             for (std::size_t b = 0; b < Phis.size(); ++b) {
                 const double t = T[a * Phis.size() + b];
                 const ClosureValues v = evaluate_closures(material, Phis[b], phi_hats[a], t);
-                table.row({{"phi_hat", phi_hats[a]},
-                           {"Phi", Phis[b]},
-                           {"T", t},
-                           {"Phi_rcp", v.Phi_rcp},
-                           {"Phi_co", v.Phi_co},
-                           {"g", v.g},
-                           {"p_k", v.p_k},
-                           {"p_y", v.p_y},
-                           {"p", v.p},
-                           {"eta", v.eta},
-                           {"lambda", v.lambda},
-                           {"eps", v.eps},
-                           {"dissipation", v.dissipation},
-                           {"c", std::sqrt(v.c2)}});
+                table.row(TableRow{{"phi_hat", phi_hats[a]}, {"Phi", Phis[b]}, {"T", t}}.add(closure_columns(v)));
             }
             table.blank();
             table.blank();

@@ -4,7 +4,9 @@
 
 #include "closures/closures.hpp"
 #include "core/format.hpp"
-#include "flow_run/flow_output.hpp"
+#include "drum/drum_state.hpp"
+#include "flow/flow_loop.hpp"
+#include "flow/flow_tables.hpp"
 #include "scenes/material_section.hpp"
 
 #include <cmath>
@@ -90,8 +92,7 @@ struct FlowJob : SceneJob {
                          {"dt", solver.last_dt()}});
         };
         const RunState state = [&](StateIO& io) { io("flow", solver)("history", history)("mass0", mass0)("next", next); };
-        if (!checkpoints_or_none(checkpoints).resume(t_end, state)) sample();
-        advance_flow(solver, t_end, label, sample, checkpoints, state);
+        run_flow(solver, t_end, label, sample, checkpoints, state);
         OutputSet out;
         out.add("history.dat", history);
         if (grid.n[0] == 1 && grid.n[1] == 1)

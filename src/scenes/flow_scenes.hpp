@@ -6,9 +6,9 @@
 // Each reads [material] (closures) and [flow] (solver settings).
 #pragma once
 
+#include "drum/drum.hpp"
 #include "flow/flow_solver.hpp"
 #include "scenes/scene_kind.hpp"
-#include "tumbler/drum.hpp"
 
 namespace granseg {
 

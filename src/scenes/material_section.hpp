@@ -3,7 +3,7 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/scene_file.hpp"
+#include "run/scene_file.hpp"
 
 namespace granseg {
 

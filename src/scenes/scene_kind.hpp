@@ -6,14 +6,14 @@
 //   2. the driver calls SceneFile::finish(), rejecting keys nobody asked for;
 //   3. run: the job computes and returns its files; the driver writes them all at the end.
 // So bad input never produces output, and a run that throws (InvariantError) leaves none either.
-// A kind that steps in time also writes checkpoints while it runs (core/run_checkpoints.hpp) into
+// A kind that steps in time also writes checkpoints while it runs (run/run_checkpoints.hpp) into
 // its output directory, checkpoint.gsc, and resumes from them (docs/checkpoints.md).
 // A new scene kind adds one row to scene_kinds() in registry.cpp and a section to docs/scenes.md.
 #pragma once
 
-#include "core/output.hpp"
-#include "core/run_checkpoints.hpp"
-#include "core/scene_file.hpp"
+#include "run/output.hpp"
+#include "run/run_checkpoints.hpp"
+#include "run/scene_file.hpp"
 
 #include <functional>
 #include <memory>

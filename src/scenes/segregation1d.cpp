@@ -1,7 +1,7 @@
 #include "scenes/segregation1d.hpp"
 
 #include "core/format.hpp"
-#include "core/progress.hpp"
+#include "run/run_loop.hpp"
 #include "segregation/column.hpp"
 #include "segregation/invariants.hpp"
 #include "segregation/segregation_solver.hpp"
@@ -13,9 +13,6 @@ namespace granseg {
 
 namespace {
 
-// Relative change of the amount of small particles a run may show: eq. (64) with zero-flux ends
-// conserves it to round-off (verify_overshoot measures ~1e-16); 1e-12 flags a real leak.
-constexpr double kMassTolerance = 1e-12;
 // Invariants are checked every this many steps (and after the last one).
 constexpr long kCheckEvery = 1000;
 
@@ -31,19 +28,24 @@ struct Segregation1d : SceneJob {
         const double Phi_max = *std::max_element(column.fields.Phi.begin(), column.fields.Phi.end());
         const double mass0 = total_amount(column.grid, phi);
         BoundsMonitor bounds;
-        Progress progress("segregation1d", t_end);
         const auto check = [&] {
             check_segregation_invariants("segregation1d", bounds, solver.largest_correction(), mass0,
-                                         total_amount(column.grid, phi), mass0, kMassTolerance, bounded, Phi_max);
+                                         total_amount(column.grid, phi), mass0, kAmountTolerance, bounded, Phi_max);
         };
+        const double dt_max = solver.time_step(column.fields);
+        double t = 0.0;
         long steps = 0;
-        solver.advance(column.fields, t_end, phi, [&](double t, double) {
+        RunLoop loop;
+        loop.label = "segregation1d", loop.t_end = t_end;
+        loop.time = [&] { return t; };
+        loop.steps = [&] { return steps; };
+        loop.step = [&] { solver.step_towards(column.fields, dt_max, t_end, t, phi), ++steps; };
+        loop.observers.push_back([&] {
             bounds.observe(column.grid, phi, column.fields.Phi);
-            if (++steps % kCheckEvery == 0) check();
-            progress.update(t);
+            if (steps % kCheckEvery == 0) check();
         });
+        run_loop(loop);
         check();
-        progress.finish();
 
         DataTable table;
         table.comment("segregation1d: scheme " + scheme_name(options.scheme) + ", t = " + format_number(t_end) +

@@ -1,9 +1,9 @@
 #include "scenes/start_from.hpp"
 
-#include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
 #include "core/format.hpp"
-#include "core/run_checkpoints.hpp"
+#include "run/checkpoint_file.hpp"
+#include "run/run_checkpoints.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,13 +4,13 @@
 //
 //   solves      nothing: finds and checks the source's flow state
 //   inputs      the scene's [initial] flow (a checkpoint file), its [drum] keys and t_end
-//   outputs     the path of the source; a StateIO at its flow solver's state (core/state_io.hpp)
+//   outputs     the path of the source; a StateIO at its flow solver's state (run/state_io.hpp)
 //   invariants  the source is a whole checkpoint of a tumbler-flow or tumbler run of the same
 //               drum (every [drum] key equal) at a time before t_end; else one line naming the key
 #pragma once
 
-#include "core/scene_file.hpp"
-#include "core/state_io.hpp"
+#include "run/scene_file.hpp"
+#include "run/state_io.hpp"
 
 #include <string>
 

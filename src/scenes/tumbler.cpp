@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/format.hpp"
+#include "scenes/drum_keys.hpp"
 #include "scenes/flow_scenes.hpp"
 #include "scenes/material_section.hpp"
 #include "scenes/start_from.hpp"
@@ -50,12 +51,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
 
     const std::string seg = "segregation";
     s.S = scene.number(seg, "S", Range::at_least(0), s.S);
-    s.segregation.scheme = parse_scheme(scene.choice(seg, "scheme", scheme_names(), "modified-godunov"));
-    if (!preserves_bounds(s.segregation.scheme))
-        scene.fail(seg, "scheme",
-                   "\"" + scheme_name(s.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
-                   bounded_scheme_names());
-    s.segregation.limiter = parse_limiter(scene.choice(seg, "limiter", limiter_names(), "mc"));
+    read_bounded_scheme(scene, s.segregation);
     s.segregation.cfl = scene.number(seg, "cfl", Range::left_open(0, 1), s.segregation.cfl);
     s.Phi_min = scene.number(seg, "Phi_min", Range::right_open(0, 1), s.Phi_min);
     s.diagnostic_min_shear_rate = scene.number(seg, "diagnostic_min_shear_rate", Range::at_least(0), s.diagnostic_min_shear_rate);
@@ -78,18 +74,9 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     // drum checks (FlowSolver::set_state).
     const Grid grid = s.drum.grid();
     const std::vector<double> fill = drum_fill_fraction(s.drum, grid);
-    for_each_bed_cell(grid, [&](const BedCell& b) {
-        const double v = s.phi_hat0(b.x, b.z);
-        if (fill[b.c] > 0.0 && !(v >= 0.0 && v <= 1.0))
-            scene.fail("initial", "phi_hat",
-                       "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
-                       "0 <= phi_hat <= 1 wherever the drum holds material");
-        const double tau = s.tracer0 ? s.tracer0(b.x, b.z) : 0.0;
-        if (!(tau >= 0.0 && tau <= 1.0))
-            scene.fail("initial", "tracer",
-                       "tracer = " + format_number(tau) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
-                       "0 <= tracer <= 1 in the drum");
-    });
+    require_share(scene, grid, "phi_hat", s.phi_hat0, "0 <= phi_hat <= 1 wherever the drum holds material",
+                  [&](std::size_t c) { return fill[c] > 0.0; });
+    if (s.tracer0) require_share(scene, grid, "tracer", s.tracer0, "0 <= tracer <= 1 in the drum");
     try {
         CoupledTumbler probe(s);
         t.run.regions = coupled_regions(s.drum, surface_level(s.material, probe.initial_mixture()));

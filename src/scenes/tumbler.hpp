@@ -1,12 +1,12 @@
 // Scene kind "tumbler": the whole model of Sect. 4.2, flow and segregation coupled in the drum
-// (src/tumbler/coupled_tumbler.hpp), Fig. 7a-d. Keys: docs/scenes.md; outputs: history.dat,
+// (src/coupled/coupled_tumbler.hpp), Fig. 7a-d. Keys: docs/scenes.md; outputs: history.dat,
 // summary.dat, initial_lab.dat, fields_lab.dat, frames/frame_NNN.dat, vtk/tumbler_NNNN.vtk
-// (src/tumbler/coupled_run.hpp).
+// (src/coupled/coupled_run.hpp).
 #pragma once
 
+#include "coupled/coupled_run.hpp"
+#include "coupled/coupled_tumbler.hpp"
 #include "scenes/scene_kind.hpp"
-#include "tumbler/coupled_run.hpp"
-#include "tumbler/coupled_tumbler.hpp"
 
 namespace granseg {
 

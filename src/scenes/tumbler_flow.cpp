@@ -6,7 +6,9 @@
 #include "scenes/flow_scenes.hpp"
 
 #include "core/format.hpp"
-#include "flow_run/flow_output.hpp"
+#include "drum/drum_state.hpp"
+#include "flow/flow_loop.hpp"
+#include "flow/flow_tables.hpp"
 #include "scenes/material_section.hpp"
 
 #include <algorithm>
@@ -52,7 +54,7 @@ public:
         }
     }
 
-    /// Saves or restores (core/state_io.hpp) what the record has taken so far; the rest is set-up.
+    /// Saves or restores (run/state_io.hpp) what the record has taken so far; the rest is set-up.
     void checkpoint(StateIO& io) {
         io("record.mass0", mass0_)("record.angle", angle_)("record.layer", layer_)("record.history", history_)("record.out",
                                                                                                                out_);
@@ -141,8 +143,7 @@ struct TumblerFlow : SceneJob {
         start_at_rest(solver);
         FlowDrumRecord record(solver, drum, run_options, surface_level(material, settings.phi_hat));
         const RunState state = [&](StateIO& io) { io("flow", solver)("record", record); };
-        if (!checkpoints_or_none(checkpoints).resume(run_options.t_end, state)) record.sample();
-        const RunTime cost = advance_flow(
+        const RunTime cost = run_flow(
             solver, run_options.t_end, "tumbler-flow", [&] { record.sample(); }, checkpoints, state);
         return record.finish(cost);
     }

@@ -1,8 +1,9 @@
 #include "scenes/tumbler_kinematic.hpp"
 
 #include "core/format.hpp"
+#include "kinematic/kinematic_tables.hpp"
+#include "scenes/drum_keys.hpp"
 #include "scenes/material_section.hpp"
-#include "tumbler/tumbler_tables.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,7 @@ struct TumblerKinematic : SceneJob {
 
     OutputSet run() override {
         KinematicTumbler tumbler(scene.setup);
-        const TumblerRunResult result = run_kinematic_tumbler(tumbler, scene.run, {}, checkpoints);
+        const KinematicRunResult result = run_kinematic_tumbler(tumbler, scene.run, {}, checkpoints);
         return tumbler_kinematic_outputs(tumbler, result, scene.run);
     }
 };
@@ -55,12 +56,7 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     k.bulk_cfl = cfl, k.segregation.cfl = cfl;
     k.S = scene.number("segregation", "S", Range::at_least(0), k.S);
     k.gravity = scene.number("segregation", "gravity", Range::above(0), k.gravity);
-    k.segregation.scheme = parse_scheme(scene.choice("segregation", "scheme", scheme_names(), "modified-godunov"));
-    k.segregation.limiter = parse_limiter(scene.choice("segregation", "limiter", limiter_names(), "mc"));
-    if (!preserves_bounds(k.segregation.scheme))
-        scene.fail("segregation", "scheme",
-                   "\"" + scheme_name(k.segregation.scheme) + "\" does not keep 0 <= phi <= Phi, which the run checks",
-                   bounded_scheme_names());
+    read_bounded_scheme(scene, k.segregation);
     k.bulk = parse_bulk_scheme(scene.choice("bulk", "scheme", bulk_scheme_names(), "fct"));
     const Expression phi_hat = scene.expression("initial", "phi_hat", {"x", "z"}, "0.5");
     k.phi_hat0 = [phi_hat](double x, double z) { return phi_hat({x, z}); };
@@ -77,31 +73,25 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
         scene.fail("drum", "diameter", e.what(), "a drum of docs/scenes.md");
     }
     // Cross-key conditions on the grid: phi_hat0 in [0, 1] at every bed-cell centre.
-    for_each_bed_cell(fields.grid, [&](const BedCell& b) {
-        const double v = k.phi_hat0(b.x, b.z);
-        if (!(v >= 0.0 && v <= 1.0))
-            scene.fail("initial", "phi_hat",
-                       "phi_hat = " + format_number(v) + " at x = " + format_number(b.x) + ", z = " + format_number(b.z),
-                       "0 <= phi_hat <= 1 at every bed cell");
-    });
+    require_share(scene, fields.grid, "phi_hat", k.phi_hat0, "0 <= phi_hat <= 1 at every bed cell");
     return s;
 }
 
-OutputSet tumbler_kinematic_outputs(const KinematicTumbler& tumbler, const TumblerRunResult& result,
-                                    const TumblerRunOptions& run) {
+OutputSet tumbler_kinematic_outputs(const KinematicTumbler& tumbler, const KinematicRunResult& result,
+                                    const KinematicRunOptions& run) {
     OutputSet out;
     const Grid& g = tumbler.grid();
     out.add("tumbler_initial.dat", composition_cells(g, result.phi_hat_initial, "phi_hat at t = 0"));
     out.add("tumbler_final.dat", composition_cells(g, composition_field(g, tumbler.phi(), tumbler.Phi()),
                                                    "phi_hat at t = " + format_number(tumbler.time()) + " s"));
-    out.add("tumbler_flow.dat", tumbler_flow_cells(tumbler));
+    out.add("tumbler_flow.dat", kinematic_flow_cells(tumbler));
     out.add("tumbler_outline.dat", drum_outline(tumbler.flow()));
-    DataTable metrics = tumbler_metrics(result, run.regions);
+    DataTable metrics = kinematic_metrics(result, run.regions);
     metrics.comment(std::to_string(tumbler.steps()) + " steps (dt = " + format_number(tumbler.time_step()) + " s), " +
                     std::to_string(tumbler.cell_updates()) + " cell updates; relative change of sum(phi): " +
                     format_number((result.mass_end - result.mass_start) / result.mass_start, 3));
     out.add("tumbler_metrics.dat", metrics);
-    out.add("tumbler_shells.dat", tumbler_shells(tumbler, result, kTumblerShells));
+    out.add("tumbler_shells.dat", kinematic_shells(tumbler, result, kTumblerShells));
     for (std::size_t n = 0; n < result.frames.size(); ++n) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%03zu.dat", n + 1);

@@ -13,7 +13,7 @@
 #pragma once
 
 #include "core/grid.hpp"
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 #include "segregation/flux_difference.hpp"
 
 #include <array>
@@ -31,7 +31,7 @@ struct FrozenFields {
     // flux -D min(Phi_L, Phi_R) d(phi_hat)/dx_k, which is -D d(phi)/dx_k for constant Phi
     // (docs/assumptions.md G3). D = 0 switches it off.
     double D = 0.0;
-    /// Saves or restores (core/state_io.hpp) the cell fields (the faces and D are set-up).
+    /// Saves or restores (run/state_io.hpp) the cell fields (the faces and D are set-up).
     void checkpoint(StateIO& io) { io("Phi", Phi)("a", a); }
 };
 

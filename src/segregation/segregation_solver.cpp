@@ -88,15 +88,19 @@ long SegregationSolver::advance(const FrozenFields& fields, double duration, std
                                 const std::function<void(double, double)>& after_step) {
     const double dt_max = time_step(fields);
     long steps = 0;
-    double t = 0.0;
-    while (t < duration) {
-        const double dt = std::min(dt_max, duration - t);
-        step(fields, dt, phi);
-        t = dt == duration - t ? duration : t + dt;
-        ++steps;
+    for (double t = 0.0; t < duration; ++steps) {
+        const double dt = step_towards(fields, dt_max, duration, t, phi);
         if (after_step) after_step(t, dt);
     }
     return steps;
+}
+
+double SegregationSolver::step_towards(const FrozenFields& fields, double dt_max, double duration, double& t,
+                                       std::vector<double>& phi) {
+    const double dt = std::min(dt_max, duration - t);
+    step(fields, dt, phi);
+    t = dt == duration - t ? duration : t + dt;
+    return dt;
 }
 
 }  // namespace granseg

@@ -34,7 +34,7 @@
 //    (largest_correction) so a run can prove it was round-off and not a broken scheme.
 #pragma once
 
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 #include "segregation/frozen_fields.hpp"
 #include "segregation/scheme.hpp"
 
@@ -67,6 +67,11 @@ public:
     /// One sub-step of length dt (eq. 52b), split over the axes; phi changes in inside cells only.
     void step(const FrozenFields& fields, double dt, std::vector<double>& phi);
 
+    /// One step of a run from t to `duration`: of length min(dt_max, duration - t), dt_max =
+    /// time_step(fields); t moves on by it, to `duration` itself on the last step. Returns the
+    /// step's length.
+    double step_towards(const FrozenFields& fields, double dt_max, double duration, double& t, std::vector<double>& phi);
+
     /// Steps of length time_step(fields) (the last one shortened) until `duration` has passed;
     /// calls after_step(t, dt) after each step if given. Returns the number of steps.
     long advance(const FrozenFields& fields, double duration, std::vector<double>& phi,
@@ -94,7 +99,7 @@ private:
     std::vector<double> F_, F_sum_, at_lower_, at_upper_, stage_;  // work space
 
 public:
-    /// Saves or restores (core/state_io.hpp) the counts a run reports.
+    /// Saves or restores (run/state_io.hpp) the counts a run reports.
     void checkpoint(StateIO& io) { io("cell_updates", cell_updates_)("largest_correction", largest_correction_); }
 };
 

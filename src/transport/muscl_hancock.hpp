@@ -2,7 +2,7 @@
 // linear reconstruction with a half-step predictor (MUSCL-Hancock; van Leer, SIAM J. Sci. Stat.
 // Comput. 5, 1984; Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics", 3rd ed.
 // 2009, Sect. 14.4), unsplit in 2-D and 3-D. The flow's mass balance carries Phi with these face
-// values (flow_faces/semi_implicit_faces.hpp), the bulk transport phi_hat (segregation/bulk_transport_fct.hpp).
+// values (flow/faces/semi_implicit_faces.hpp), the bulk transport phi_hat (segregation/bulk_transport_fct.hpp).
 //
 //   solves      nothing over time: the face values q_f of a cell field q for a step of length dt
 //   inputs      the grid (inside cells, periodic axes) and the limiter, once; per step q per cell,

@@ -1,7 +1,7 @@
 // Sect. 2.1 closures: values at hand-checked states and the [material] section.
 #include "closures/closures.hpp"
 #include "core/error.hpp"
-#include "core/scene_file.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/material_section.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -11,7 +11,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(closures)
+BOOST_AUTO_TEST_SUITE(closures_tests)
 
 BOOST_AUTO_TEST_CASE(hand_computed_state_below_Phi_co) {
     const Material m = Material::glass_substitute();

@@ -4,11 +4,9 @@
 // a min or a sum of integers; Eigen's threaded sparse products sum each row in one thread). And
 // below that grid a run opens no second thread at all, whatever OMP_NUM_THREADS says.
 #include "core/threads.hpp"
-#include "tumbler/coupled_tumbler.hpp"
+#include "coupled/coupled_tumbler.hpp"
 
 #include <boost/test/unit_test.hpp>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <array>
@@ -30,13 +28,11 @@ int smallest_threaded_drum() {
 
 /// Phi, phi, u_x, u_z and T of the drum after `steps` coupled steps on `threads` threads.
 std::vector<std::vector<double>> drum_after(int cells_per_diameter, int steps, int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
+    const ThreadScope scope(threads);
     CoupledTumblerSetup setup;
     setup.drum.cells_per_diameter = cells_per_diameter;
     CoupledTumbler tumbler(setup);
     for (int n = 0; n < steps; ++n) tumbler.step();
-    omp_set_num_threads(before);
     const FlowSolver& flow = tumbler.flow();
     return {flow.Phi(), tumbler.phi(), flow.u(0), flow.u(2), flow.T()};
 }
@@ -45,19 +41,13 @@ std::vector<std::vector<double>> drum_after(int cells_per_diameter, int steps, i
 template <class Work>
 int largest_team(Work&& work) {
     int largest = 0;
-    work([&] {
-#pragma omp parallel
-        {
-#pragma omp critical
-            largest = std::max(largest, omp_get_num_threads());
-        }
-    });
+    work([&] { largest = std::max(largest, region_threads()); });
     return largest;
 }
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(threads)
+BOOST_AUTO_TEST_SUITE(core_threads_tests)
 
 BOOST_AUTO_TEST_CASE(one_and_two_threads_give_the_same_drum_to_the_bit) {
     const int n = smallest_threaded_drum();
@@ -70,8 +60,7 @@ BOOST_AUTO_TEST_CASE(one_and_two_threads_give_the_same_drum_to_the_bit) {
 }
 
 BOOST_AUTO_TEST_CASE(below_the_crossover_a_run_opens_one_thread) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(2);
+    const ThreadScope two(2);
     // SerialScope is what a step below the crossover runs in: every region in it gets one thread
     // (Eigen's products read the same setting), and the caller's setting comes back after it.
     const int inside = largest_team([](auto region) {
@@ -84,20 +73,17 @@ BOOST_AUTO_TEST_CASE(below_the_crossover_a_run_opens_one_thread) {
     });
     BOOST_TEST(inside == 1);
     BOOST_TEST(outside == 2);
-    BOOST_TEST(omp_get_max_threads() == 2);
+    BOOST_TEST(max_threads() == 2);
     BOOST_TEST(run_threads(kParallelCells - 1) == 1);
     BOOST_TEST(run_threads(kParallelCells) == 2);
-    omp_set_num_threads(before);
 }
 
 BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_is_there) {
-    const int before = omp_get_max_threads();
     // The thread and the OpenMP nesting level each index ran at (level 0: outside any region,
     // not even a one-thread team), and a reduction (largest value, count) over the indices.
     auto run = [](bool parallel) {
         std::vector<int> thread(1000, -1), level(1000, -1);
-        parallel_for(parallel, thread.size(),
-                     [&](std::size_t i) { thread[i] = omp_get_thread_num(), level[i] = omp_get_level(); });
+        parallel_for(parallel, thread.size(), [&](std::size_t i) { thread[i] = thread_number(), level[i] = region_level(); });
         struct Fold {
             double largest = 0.0;
             long count = 0;
@@ -114,12 +100,16 @@ BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_
         return std::make_tuple(*std::max_element(thread.begin(), thread.end()), *std::max_element(level.begin(), level.end()),
                                f.largest, f.count);
     };
-    omp_set_num_threads(2);
-    const auto [threads_on, level_on, largest_on, count_on] = run(true);
-    const auto [threads_off, level_off, largest_off, count_off] = run(false);
-    omp_set_num_threads(1);
-    const auto [threads_one, level_one, largest_one, count_one] = run(true);
-    omp_set_num_threads(before);
+    const auto on_two = [&](bool parallel) {
+        const ThreadScope two(2);
+        return run(parallel);
+    };
+    const auto [threads_on, level_on, largest_on, count_on] = on_two(true);
+    const auto [threads_off, level_off, largest_off, count_off] = on_two(false);
+    const auto [threads_one, level_one, largest_one, count_one] = [&] {
+        const ThreadScope one(1);
+        return run(true);
+    }();
     BOOST_TEST((threads_on == 1 && level_on == 1));    // the second thread took its share
     BOOST_TEST((threads_off == 0 && level_off == 0));  // a grid below the crossover: no region
     BOOST_TEST((threads_one == 0 && level_one == 0));  // one thread: no region either
@@ -128,19 +118,18 @@ BOOST_AUTO_TEST_CASE(loops_run_on_threads_only_where_they_pay_and_more_than_one_
 }
 
 BOOST_AUTO_TEST_CASE(a_team_shares_its_loops_and_sums_to_the_same_bits_on_any_number_of_threads) {
-    const int before = omp_get_max_threads();
     const long n = 5000;  // about ten blocks of a dot product
     std::vector<double> a(n), b(n);
     for (long i = 0; i < n; ++i) a[i] = 1.0 / (1.0 + i), b[i] = std::sin(0.37 * i);
     // Three dot products in a row on every thread (the partial sums are reused in turn), and a
     // shared loop whose rows must all be written before any thread reads them.
     auto run = [&](int threads) {
-        omp_set_num_threads(threads);
+        const ThreadScope scope(threads);
         std::vector<std::array<double, 3>> seen(threads);
         std::vector<double> twice(n, 0.0);
         long wrong = 0;
         run_as_team(true, n, [&](Team& team) {
-            std::array<double, 3>& mine = seen[omp_get_thread_num()];
+            std::array<double, 3>& mine = seen[thread_number()];
             mine = {team.dot(a.data(), b.data(), n), team.dot(b.data(), b.data(), n), team.dot(a.data(), a.data(), n)};
             team.share(n, [&](long begin, long end) {
                 for (long i = begin; i < end; ++i) twice[i] = 2.0 * a[i];
@@ -154,20 +143,17 @@ BOOST_AUTO_TEST_CASE(a_team_shares_its_loops_and_sums_to_the_same_bits_on_any_nu
         return seen[0];
     };
     const auto one = run(1), two = run(2), three = run(3);
-    omp_set_num_threads(before);
     BOOST_TEST((one == two && two == three));
 }
 
 BOOST_AUTO_TEST_CASE(lanes_run_once_each_on_threads_that_open_no_more) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(2);
+    const ThreadScope two(2);
     std::array<int, 2> runs{0, 0}, threads{0, 0}, team{0, 0};
     parallel_lanes(true, 2, [&](int l) {
         ++runs[l];
-        threads[l] = omp_get_thread_num();
-        team[l] = largest_team([](auto region) { region(); });
+        threads[l] = thread_number();
+        team[l] = region_threads();
     });
-    omp_set_num_threads(before);
     BOOST_TEST((runs[0] == 1 && runs[1] == 1));
     BOOST_TEST(threads[0] != threads[1]);        // side by side
     BOOST_TEST((team[0] == 1 && team[1] == 1));  // a region inside a lane gets one thread

@@ -4,13 +4,13 @@
 // segregation sub-step in every flow step, the flow without packing feedback as the flow alone, a
 // passive tracer riding in a segregating drum, a drum of one phase only, and the diagnostic that
 // switches the segregation off below a shear rate.
+#include "coupled/coupled_tumbler.hpp"
+#include "coupled/coupled_run.hpp"
 #include "direction/segregation_direction.hpp"
-#include "flow_run/bed.hpp"
+#include "drum/bed.hpp"
+#include "drum/drum.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/invariants.hpp"
-#include "tumbler/coupled_run.hpp"
-#include "tumbler/coupled_tumbler.hpp"
-#include "tumbler/drum.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -21,7 +21,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(coupled_tumbler)
+BOOST_AUTO_TEST_SUITE(coupled_tumbler_tests)
 
 BOOST_AUTO_TEST_CASE(bulk_step_carries_half_exactly_and_reports_its_courant_number) {
     const Grid g = drum_grid(12, 1.0);
@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(no_segregation_keeps_phi_hat_half_and_both_phases) {
     BOOST_TEST(not_half == 0);
     BOOST_TEST(total_amount(g, tumbler.phi()) == small0, tt::tolerance(1e-14));
     BOOST_TEST(tumbler.flow().mass() == all0, tt::tolerance(1e-14));
-    BOOST_TEST(tumbler.segregation_substeps() >= 1);
+    BOOST_TEST(tumbler.split_segregation_steps() >= 1);
 }
 
 BOOST_AUTO_TEST_CASE(either_transport_keeps_both_phases_and_the_bounds_while_segregating) {
@@ -144,8 +144,8 @@ BOOST_AUTO_TEST_CASE(the_segregation_sub_step_covers_every_flow_step) {
     setup.drum.cells_per_diameter = 26;
     CoupledTumbler tumbler(setup);
     for (int n = 0; n < 100; ++n) tumbler.step();
-    BOOST_TEST(tumbler.segregation_substeps() == tumbler.flow().steps());
-    BOOST_TEST(tumbler.segregation_steps() >= tumbler.flow().steps());
+    BOOST_TEST(tumbler.split_segregation_steps() == tumbler.flow().steps());
+    BOOST_TEST(tumbler.segregation_solver_steps() >= tumbler.flow().steps());
 }
 
 BOOST_AUTO_TEST_CASE(without_packing_feedback_the_flow_is_the_flow_alone) {

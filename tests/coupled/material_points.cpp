@@ -1,9 +1,9 @@
-// Material points (tumbler/material_points.hpp): a rigid rotation about the axis keeps every point
+// Material points (coupled/material_points.hpp): a rigid rotation about the axis keeps every point
 // on its circle (the midpoint rule's radial error per step is O((omega dt)^4) r, here below 2e-6 of
 // r over a turn), so the marked share within any radius stays what it was; a field at rest moves
 // nothing.
-#include "tumbler/drum.hpp"
-#include "tumbler/material_points.hpp"
+#include "coupled/material_points.hpp"
+#include "drum/drum.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -12,7 +12,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(material_points)
+BOOST_AUTO_TEST_SUITE(coupled_material_points_tests)
 
 namespace {
 constexpr double kCore = 0.013;

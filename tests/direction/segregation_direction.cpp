@@ -1,7 +1,7 @@
 // The Sect. 2.3 direction procedure and the segregation velocity at hand-checked points (the
 // systematic checks are verification/verify_direction*.cpp).
-#include "closures/closures.hpp"
 #include "direction/segregation_direction.hpp"
+#include "closures/closures.hpp"
 #include "direction/segregation_velocity.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -27,7 +27,7 @@ Matrix3d simple_shear(double gamma) {  // u = (gamma z, 0, 0)
 }
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(direction_suite)
+BOOST_AUTO_TEST_SUITE(direction_segregation_direction_tests)
 
 BOOST_AUTO_TEST_CASE(simple_shear_gives_the_shear_normal) {
     const SegregationDirection r = segregation_direction(simple_shear(2.385), Vector3d(-1.3, 0, 0));

@@ -1,10 +1,10 @@
-// Drum cross-sections (core/drum_shape.hpp) against closed forms, and the drum's grid and
-// surface for them (flow_run/bed.hpp drum_grid, tumbler/drum.hpp). Tolerances: a few roundings of
+// Drum cross-sections (drum/drum_shape.hpp) against closed forms, and the drum's grid and
+// surface for them (drum/bed.hpp drum_grid, drum/drum.hpp). Tolerances: a few roundings of
 // numbers of size R (1e-14 relative); the bisection of surface_offset stops at 4e-16 R.
-#include "core/drum_shape.hpp"
+#include "drum/drum_shape.hpp"
 #include "core/error.hpp"
-#include "flow_run/bed.hpp"
-#include "tumbler/drum.hpp"
+#include "drum/bed.hpp"
+#include "drum/drum.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -13,7 +13,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(drum_shape)
+BOOST_AUTO_TEST_SUITE(drum_shape_tests)
 
 BOOST_AUTO_TEST_CASE(regular_polygons_against_closed_forms) {
     const double R = 0.05;

@@ -1,9 +1,9 @@
-// The coupled drum's own regions (tumbler/layer_regions.hpp): a uniform mixture has its share in
+// The coupled drum's own regions (drum/layer_regions.hpp): a uniform mixture has its share in
 // every region; a composition that depends on the radius only through the regions' circles is
 // read exactly, cut cells by their area share; a layer thicker than d leaves no core.
-#include "tumbler/drum.hpp"
-#include "tumbler/layer_regions.hpp"
-#include "tumbler/region_weights.hpp"
+#include "drum/layer_regions.hpp"
+#include "drum/drum.hpp"
+#include "drum/region_weights.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -13,7 +13,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(layer_regions)
+BOOST_AUTO_TEST_SUITE(drum_layer_regions_tests)
 
 namespace {
 constexpr double kD = 0.025, kR = 0.05, kAxis = 0.005, kLayer = 0.012;

@@ -1,10 +1,10 @@
-// Exact areas of cells inside discs, convex polygons and half-planes (core/plane_geometry.hpp) and
-// the region weights built on them (tumbler/region_weights.hpp), against closed-form areas.
+// Exact areas of cells inside discs, convex polygons and half-planes (drum/plane_geometry.hpp) and
+// the region weights built on them (drum/region_weights.hpp), against closed-form areas.
 // Tolerances: each area is a sum of a few (tiled grids: a few thousand) terms of size <= the
 // answer, each rounded once or twice, so 1e-13 relative holds with a wide margin.
+#include "drum/plane_geometry.hpp"
 #include "core/error.hpp"
-#include "core/plane_geometry.hpp"
-#include "tumbler/region_weights.hpp"
+#include "drum/region_weights.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -35,7 +35,7 @@ Polygon regular(int sides, double R, double start) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(plane_geometry)
+BOOST_AUTO_TEST_SUITE(drum_plane_geometry_tests)
 
 BOOST_AUTO_TEST_CASE(cells_wholly_inside_or_outside_are_exact) {
     BOOST_TEST(rectangle_area_in_disc(0.1, 0.2, 0.3, 0.7, {0, 0}, 1.0) == (0.3 - 0.1) * (0.7 - 0.2));

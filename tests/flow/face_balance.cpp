@@ -1,10 +1,10 @@
-// The balance of a cell's face fluxes (flow_fields/face_balance.hpp) against sums over the faces that
+// The balance of a cell's face fluxes (flow/fields/face_balance.hpp) against sums over the faces that
 // core/grid.hpp names for the cell, and the transport update of the semi-implicit step
-// (flow_faces/convection.hpp) against the coupling identity Phi_new = Phi - dt div M.
-#include "flow_faces/convection.hpp"
-#include "flow_faces/semi_implicit_faces.hpp"
-#include "flow_fields/face_balance.hpp"
-#include "flow_fields/flow_mesh.hpp"
+// (flow/faces/convection.hpp) against the coupling identity Phi_new = Phi - dt div M.
+#include "flow/fields/face_balance.hpp"
+#include "flow/faces/convection.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
+#include "flow/fields/flow_mesh.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -35,7 +35,7 @@ std::array<std::size_t, 2> cell_faces(const Grid& g, int axis, int i, int j, int
     return {g.face_index(axis, i, j, k), g.face_index(axis, i + (axis == 0), j + (axis == 1), k + (axis == 2))};
 }
 
-/// Per inside cell (in index order) the three sums of flow_fields/face_balance.hpp with weights w.
+/// Per inside cell (in index order) the three sums of flow/fields/face_balance.hpp with weights w.
 struct Sums {
     std::vector<double> balance, outflow, after;
 };
@@ -53,7 +53,7 @@ Sums helper_sums(const FlowMesh& mesh, const std::array<std::vector<double>, 3>&
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(flow_balance)
+BOOST_AUTO_TEST_SUITE(flow_face_balance_tests)
 
 BOOST_AUTO_TEST_CASE(face_balance_sums_the_faces_the_grid_names_for_a_cell) {
     // A 3-D grid (periodic along y) and an x-z plane whose inactive y faces hold NaN: the helpers

@@ -1,16 +1,17 @@
 // Building blocks of the flow solver (src/flow/): the HLLC flux, the hydrostatic reconstruction,
 // the batched line solver, the rotating frame and the time of gravity in a step, the drum geometry, and the inverse equation of
 // state and the dust faces of the semi-implicit step.
-#include "core/error.hpp"
-#include "core/scene_file.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_faces/hllc.hpp"
-#include "flow_faces/semi_implicit_faces.hpp"
-#include "flow_fields/frame.hpp"
-#include "flow_pressure/equation_of_state.hpp"
-#include "flow_run/bed.hpp"
-#include "flow_run/flow_output.hpp"
+#include "core/error.hpp"
+#include "drum/bed.hpp"
+#include "drum/drum_state.hpp"
+#include "flow/faces/hllc.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
+#include "flow/fields/frame.hpp"
+#include "flow/flow_tables.hpp"
+#include "flow/pressure/equation_of_state.hpp"
 #include "linalg/tridiagonal_lines.hpp"
+#include "run/scene_file.hpp"
 #include "scenes/flow_scenes.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -25,7 +26,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(flow)
+BOOST_AUTO_TEST_SUITE(flow_solver_tests)
 
 BOOST_AUTO_TEST_CASE(hllc_of_equal_states_is_the_physical_flux) {
     std::mt19937 rng(7);

@@ -11,7 +11,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(mixture_change)
+BOOST_AUTO_TEST_SUITE(flow_mixture_change_tests)
 
 BOOST_AUTO_TEST_CASE(a_mixture_change_that_packs_a_cell_beyond_phi_rcp_is_refused_by_name) {
     const Material m = Material::glass_substitute();

@@ -1,4 +1,4 @@
-// The pressure solve's rules (flow_pressure/pressure_solver.hpp) on systems whose answers are known: one
+// The pressure solve's rules (flow/pressure/pressure_solver.hpp) on systems whose answers are known: one
 // cell (the Jacobian is 1 x 1, each conjugate-gradient solve exact, so the Newton iterates are
 // those of the scalar equation Phi(p + dp) - Phi(p) - r = 0, computed here from the equation of
 // state), and a column of cells without coupling (each row its own scalar equation).
@@ -8,9 +8,9 @@
 //     round-off (a bed at rest keeps dp = 0 exactly);
 //   - the kink rule: a cell on the stiff branch (Phi > Phi_co) whose step would cross the kink
 //     moves by the step in Phi, which for one cell lands on the root at once.
+#include "flow/pressure/pressure_solver.hpp"
 #include "closures/closures.hpp"
-#include "flow_pressure/equation_of_state.hpp"
-#include "flow_pressure/pressure_solver.hpp"
+#include "flow/pressure/equation_of_state.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -57,7 +57,7 @@ struct Cells {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(pressure_solver)
+BOOST_AUTO_TEST_SUITE(flow_pressure_solver_tests)
 
 // One cell on the soft branch, compacted by r: Phi(p) is concave, so the scalar Newton iterates
 // rise to the root from below, |F| shrinking each step. For every accuracy the solve must take

@@ -13,7 +13,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(step_repeat)
+BOOST_AUTO_TEST_SUITE(flow_step_repeat_tests)
 
 // A dense column (Phi_rcp - 0.002) thrown at 1 m/s onto the floor: after some steps of
 // compaction the corrected fluxes of a step would compact the bottom cells beyond the bound and the

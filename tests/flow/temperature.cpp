@@ -1,8 +1,8 @@
-// The temperature step (flow_diffusion/temperature.hpp) against exact discrete solutions: heating,
+// The temperature step (flow/diffusion/temperature.hpp) against exact discrete solutions: heating,
 // dissipation and conduction solved together. One long step must give the steady balance of a
 // sheared layer heated at one face, where the heat reaches only a few cells before dissipation
 // takes it (conducting first and dissipating after would spread it over the whole column).
-#include "flow_diffusion/temperature.hpp"
+#include "flow/diffusion/temperature.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -10,7 +10,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(temperature)
+BOOST_AUTO_TEST_SUITE(flow_temperature_tests)
 
 namespace {
 

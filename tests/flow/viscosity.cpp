@@ -1,8 +1,8 @@
-// The coupled implicit viscosity (flow_diffusion/coupled_viscosity.hpp) against exact steady creep: with a
+// The coupled implicit viscosity (flow/diffusion/coupled_viscosity.hpp) against exact steady creep: with a
 // step much longer than the viscous time, Phi u_new - dt div(eta grad u_new) = Phi u solves
 // div(eta grad u) = -Phi f for the impulse Phi u = dt Phi f, up to Phi/(dt eta k^2) ~ 1e-9.
-#include "flow_diffusion/coupled_viscosity.hpp"
-#include "flow_diffusion/viscosity.hpp"
+#include "flow/diffusion/viscosity.hpp"
+#include "flow/diffusion/coupled_viscosity.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -10,7 +10,7 @@
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(viscosity)
+BOOST_AUTO_TEST_SUITE(flow_viscosity_tests)
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 namespace fs = std::filesystem;
 
-BOOST_AUTO_TEST_SUITE(doc_checks)
+BOOST_AUTO_TEST_SUITE(harness_doc_checks_tests)
 
 using namespace granseg::verify::docs;
 

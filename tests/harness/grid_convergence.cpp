@@ -3,8 +3,8 @@
 // column), Roy's rule case by case, values of an exact power law f = f0 + C h^p (the fit must find
 // p and f0, and the uncertainty Fs |C| h1^p_u when the fit is exact), the conditions on hand-picked
 // series, and series whose batch means and trend residuals are known by construction.
-#include "core/error.hpp"
 #include "harness/grid_convergence.hpp"
+#include "core/error.hpp"
 #include "harness/time_series.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -12,7 +12,7 @@
 #include <cmath>
 #include <vector>
 
-BOOST_AUTO_TEST_SUITE(grid_convergence_fit)
+BOOST_AUTO_TEST_SUITE(harness_grid_convergence_tests)
 
 using namespace granseg::verify;
 

@@ -8,7 +8,7 @@
 
 using granseg::verify::CheckTable;
 
-BOOST_AUTO_TEST_SUITE(harness)
+BOOST_AUTO_TEST_SUITE(harness_tests)
 
 BOOST_AUTO_TEST_CASE(all_passing_checks_give_exit_status_zero) {
     std::ostringstream out;

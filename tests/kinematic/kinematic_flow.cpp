@@ -1,7 +1,7 @@
 // The kinematic rolling-drum flow at hand-checked points (the systematic checks are
 // verification/verify_kinematic_flow.cpp).
+#include "kinematic/kinematic_flow.hpp"
 #include "core/error.hpp"
-#include "tumbler/kinematic_flow.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -11,7 +11,7 @@ using namespace granseg;
 using Eigen::Vector3d;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(kinematic_flow_suite)
+BOOST_AUTO_TEST_SUITE(kinematic_flow_tests)
 
 BOOST_AUTO_TEST_CASE(geometry_of_the_sect_4_2_drum) {
     const RollingDrumFlow f{RollingDrumParameters{}};

@@ -83,7 +83,7 @@ int iterations(Solver& cg, const Disc& d, double tol) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(multilevel)
+BOOST_AUTO_TEST_SUITE(linalg_multilevel_tests)
 
 BOOST_AUTO_TEST_CASE(preconditioned_cg_matches_a_direct_solve) {
     const Disc d = disc(50);

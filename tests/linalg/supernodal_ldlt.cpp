@@ -7,6 +7,7 @@
 // in a wide panel (dense Cholesky) and in a narrow one (column by column); Eigen's products in a
 // lane open no threads of their own.
 #include "linalg/supernodal_ldlt.hpp"
+#include "core/threads.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -14,14 +15,12 @@
 
 #include "core/error.hpp"
 
-#include <omp.h>
-
 #include <cmath>
 #include <random>
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(supernodal_ldlt)
+BOOST_AUTO_TEST_SUITE(linalg_supernodal_ldlt_tests)
 
 using Matrix = SupernodalLDLT::Matrix;
 
@@ -131,22 +130,16 @@ BOOST_AUTO_TEST_CASE(factorises_again_with_new_values_over_eight_decades) {
 // With two threads (whatever OMP_NUM_THREADS says) the lanes run side by side; the bits are those
 // of the lanes one after the other.
 BOOST_AUTO_TEST_CASE(threads_do_not_change_the_bits) {
-    const int threads = omp_get_max_threads();
-    omp_set_num_threads(2);
+    const ThreadScope on_two(2);
     const Matrix A = viscosity_like(80, 1, 80, 11, 6, 8.0);
     SupernodalLDLT one, two;
     one.analyze(A), two.analyze(A);
     BOOST_REQUIRE(one.factorize(A, false));
-    int team = 0;
-#pragma omp parallel
-#pragma omp single
-    team = omp_get_num_threads();
-    BOOST_REQUIRE(team == 2);
+    BOOST_REQUIRE(region_threads() == 2);
     BOOST_REQUIRE(two.factorize(A, true));
     Eigen::VectorXd x1 = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0), x2 = x1;
     one.solve(x1.data()), two.solve(x2.data());
     BOOST_TEST((x1.array() == x2.array()).all());
-    omp_set_num_threads(threads);
 }
 
 // A lane's Eigen products stay on its thread: with the default settings factorize() runs (on any

@@ -1,9 +1,9 @@
 // The exact Riemann solver of system (52), its sampling and the Table 1 classifier at
 // hand-checked states (the full verification is verification/verify_table1*.cpp).
+#include "riemann/riemann_solver.hpp"
 #include "core/error.hpp"
 #include "riemann/flux_curves.hpp"
 #include "riemann/riemann_sample.hpp"
-#include "riemann/riemann_solver.hpp"
 #include "riemann/table1_classifier.hpp"
 
 #include <boost/test/unit_test.hpp>
@@ -13,7 +13,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(riemann_solver_suite)
+BOOST_AUTO_TEST_SUITE(riemann_solver_tests)
 
 BOOST_AUTO_TEST_CASE(flux_inverse_branches) {
     // f(phi; 0.8, 1) = phi (phi - 0.8)/0.8 = -0.15 at phi = 0.2 and 0.6.

@@ -8,7 +8,7 @@
 using namespace granseg;
 namespace tt = boost::test_tools;
 
-BOOST_AUTO_TEST_SUITE(segregation_flux_suite)
+BOOST_AUTO_TEST_SUITE(riemann_segregation_flux_tests)
 
 BOOST_AUTO_TEST_CASE(flux_vanishes_at_both_ends_and_is_extreme_on_Gamma) {
     BOOST_TEST(segregation_flux(0.0, 0.6, 1.0) == 0.0);

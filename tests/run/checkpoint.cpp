@@ -1,18 +1,18 @@
-// Checkpoints (core/state_io.hpp, core/checkpoint_file.hpp): values come back bit for bit, a
+// Checkpoints (run/state_io.hpp, run/checkpoint_file.hpp): values come back bit for bit, a
 // state read with another list of members is refused, a checkpoint file that is truncated,
 // corrupted or of another format is refused with one line, a failed write (disk full, a
 // directory that cannot be written) keeps the previous file; and the solvers continue to the bit:
 // a drum saved after some steps, restored into a new one and stepped on equals the drum that
 // was never stopped (which catches a member a step reads and checkpoint() forgot).
-#include "core/checkpoint_file.hpp"
 #include "core/error.hpp"
-#include "core/state_io.hpp"
-#include "tumbler/coupled_tumbler.hpp"
-#include "tumbler/kinematic_tumbler.hpp"
+#include "core/threads.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "kinematic/kinematic_tumbler.hpp"
+#include "run/checkpoint_file.hpp"
+#include "run/state_io.hpp"
 
 #include <boost/test/unit_test.hpp>
 
-#include <omp.h>
 #include <sys/resource.h>
 
 #include <cmath>
@@ -25,7 +25,7 @@
 using namespace granseg;
 namespace fs = std::filesystem;
 
-BOOST_AUTO_TEST_SUITE(checkpoint)
+BOOST_AUTO_TEST_SUITE(run_checkpoint_tests)
 
 namespace {
 
@@ -227,8 +227,8 @@ std::vector<std::vector<double>> observed(const CoupledTumbler& t) {
             t.d_s(0),
             t.d_s(2),
             {f.time(), f.last_dt(), double(f.steps()), double(f.counters().newton), double(f.counters().krylov),
-             double(f.counters().temperature_iterations), double(t.segregation_substeps()), double(t.segregation_steps()),
-             t.largest_correction(), t.max_excess(), t.min_phi(), t.largest_bulk_clip()}};
+             double(f.counters().temperature_iterations), double(t.split_segregation_steps()),
+             double(t.segregation_solver_steps()), t.largest_correction(), t.max_excess(), t.min_phi(), t.largest_bulk_clip()}};
 }
 
 /// A small segregating drum with a tracer: `before` steps, saved; then `after` steps of the
@@ -238,14 +238,15 @@ void continues_to_the_bit(CoupledTumblerSetup setup, int before, int after, int 
     CoupledTumbler run(setup);
     for (int n = 0; n < before; ++n) run.step();
     const std::string bytes = save(run);
-    const int was = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    CoupledTumbler resumed(setup);
-    restore(resumed, bytes);
-    BOOST_TEST((save(resumed) == bytes));
-    for (int n = 0; n < after; ++n) run.step(), resumed.step();
-    omp_set_num_threads(was);
-    const auto a = observed(run), b = observed(resumed);
+    const auto b = [&] {
+        const ThreadScope scope(threads);
+        CoupledTumbler resumed(setup);
+        restore(resumed, bytes);
+        BOOST_TEST((save(resumed) == bytes));
+        for (int n = 0; n < after; ++n) run.step(), resumed.step();
+        return observed(resumed);
+    }();
+    const auto a = observed(run);
     long differ = 0;
     for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];  // vector ==: bit for bit but NaN
     BOOST_TEST(differ == 0);

@@ -1,6 +1,6 @@
 // muparser expressions: evaluation, variables, and the errors users see.
+#include "run/expression.hpp"
 #include "core/error.hpp"
-#include "core/expression.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -9,7 +9,7 @@
 using granseg::Expression;
 using granseg::InputError;
 
-BOOST_AUTO_TEST_SUITE(expression)
+BOOST_AUTO_TEST_SUITE(run_expression_tests)
 
 BOOST_AUTO_TEST_CASE(evaluates_with_variables_in_order) {
     const Expression e("0.62 - 0.08*cos(_pi*z)^2 + 0*T", {"z", "T"});

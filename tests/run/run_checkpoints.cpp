@@ -1,15 +1,15 @@
-// Runs that are stopped and resumed (core/run_checkpoints.hpp) through run_scene_file: a coupled
+// Runs that are stopped and resumed (run/run_checkpoints.hpp) through run_scene_file: a coupled
 // drum killed (SIGKILL, in a child process) at a random moment and resumed writes the files of the
 // run that was never stopped, byte for byte but for the timing columns; a finished run extended
 // to a later t_end writes those of a run made with that t_end; a study (Resume::if_compatible)
 // starts a run over whose checkpoint belongs to another scene, where --resume (Resume::yes) refuses.
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "harness/same_outputs.hpp"
 #include "scenes/scene_kind.hpp"
 
 #include <boost/test/unit_test.hpp>
 
-#include <omp.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -23,7 +23,7 @@
 using namespace granseg;
 namespace fs = std::filesystem;
 
-BOOST_AUTO_TEST_SUITE(run_checkpoints)
+BOOST_AUTO_TEST_SUITE(run_checkpoints_tests)
 
 namespace {
 
@@ -72,7 +72,7 @@ BOOST_AUTO_TEST_CASE(killed_at_a_random_moment_and_resumed_writes_the_same_files
     BOOST_TEST_MESSAGE("seed " << seed << ": killed after " << kill_after << " of " << seconds << " s");
     const pid_t child = fork();
     if (child == 0) {  // a small grid: no OpenMP region is opened in the child
-        omp_set_num_threads(1);
+        const ThreadScope one(1);
         try {
             run_scene_file(scene, (dir / "killed").string());
         } catch (...) {

@@ -1,7 +1,7 @@
 // Scene-file validation: every kind of bad input gives one line
 // "FILE: [section] key: what (allowed: ...)" and nothing is written.
+#include "run/scene_file.hpp"
 #include "core/error.hpp"
-#include "core/scene_file.hpp"
 #include "harness/text_pattern.hpp"
 #include "scenes/scene_kind.hpp"
 
@@ -41,7 +41,7 @@ bool is_one_line_in_format(const std::string& message) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(scene_file)
+BOOST_AUTO_TEST_SUITE(run_scene_file_tests)
 
 BOOST_AUTO_TEST_CASE(valid_file_reads_and_finishes) {
     const SceneFile s = SceneFile::parse(

@@ -2,13 +2,13 @@
 // the reconstruction, and the configuration the kinematic drum reuses unchanged (a drum-shaped inside
 // mask, coefficients of random sign, a stream-function flow, compressible mass fluxes).
 #include "core/error.hpp"
-#include "flow_faces/convection.hpp"
+#include "flow/faces/convection.hpp"
+#include "kinematic/kinematic_flow.hpp"
 #include "segregation/bulk_transport.hpp"
 #include "segregation/column.hpp"
 #include "segregation/invariants.hpp"
 #include "segregation/reconstruction.hpp"
 #include "segregation/segregation_solver.hpp"
-#include "tumbler/kinematic_flow.hpp"
 
 #include <boost/test/unit_test.hpp>
 
@@ -38,7 +38,7 @@ bool within_bounds(const Grid& g, const std::vector<double>& phi, const std::vec
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(segregation_step)
+BOOST_AUTO_TEST_SUITE(segregation_step_tests)
 
 BOOST_AUTO_TEST_CASE(faces_know_their_cells_walls_and_periodic_wrap) {
     Grid g = Grid::plane_xz(3, 2, 0.0, 0.0, 3.0, 2.0);

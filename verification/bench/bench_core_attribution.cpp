@@ -25,16 +25,16 @@
 //   cells) takes about 40 CPU-minutes;
 //   a test of everything in a few minutes: --grids 26 --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
-#include "core/output.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "drum/drum.hpp"
 #include "harness/check_table.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
+#include "run/output.hpp"
 #include "study/fig7_report.hpp"
 #include "study/fig7_study.hpp"
 #include "study/study_options.hpp"
-#include "tumbler/coupled_tumbler.hpp"
-#include "tumbler/drum.hpp"
 
 #include <boost/program_options.hpp>
 

@@ -20,6 +20,7 @@
 // Run: build/bench/bench_drum_angle [--data DIR]   (long: over an hour on one thread, most of it
 // the 100-cell explicit run, whose steps follow the sound speed)
 #include "closures/packing.hpp"
+#include "core/threads.hpp"
 #include "flow/time_step.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
@@ -27,7 +28,6 @@
 #include "scenes/material_section.hpp"
 #include "scenes/scene_kind.hpp"
 
-#include <omp.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -96,8 +96,8 @@ HistoryRange history_range(const std::vector<std::vector<double>>& history, doub
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    if (!std::getenv("OMP_NUM_THREADS")) omp_set_num_threads(1);
-    const int threads = omp_get_max_threads();
+    const ThreadScope scope(std::getenv("OMP_NUM_THREADS") ? 0 : 1);
+    const int threads = max_threads();
     // One thread per run: the runs side by side, one per core (the slowest, the 100-cell explicit
     // run, then sets the study's time); more threads per run: one run after another.
     const int lanes = threads == 1 ? verify::machine_cores() : 1;

@@ -10,8 +10,8 @@
 // `make bench BENCH=bench_drum_shapes`.
 //
 // Run: build/bench/bench_drum_shapes [--data DIR]
-#include "core/output.hpp"
 #include "harness/program.hpp"
+#include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
 
 #include <cstdio>

@@ -26,7 +26,7 @@
 //   everything in a few minutes:
 //   --cells 26,36,50,70 --transports muscl --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
 #include "scenes/tumbler.hpp"

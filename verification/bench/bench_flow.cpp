@@ -11,11 +11,10 @@
 //
 // Run: build/bench/bench_flow [--data DIR]   (a few minutes; timings are noisy on a shared machine)
 #include "closures/closures.hpp"
+#include "core/threads.hpp"
+#include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_run/bed.hpp"
 #include "harness/program.hpp"
-
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -89,7 +88,7 @@ int main(int argc, char** argv) {
     for (int n : {50, 100, 200}) {
         const int steps = n == 200 ? 100 : 300;
         for (int threads : {1, 2}) {
-            omp_set_num_threads(threads);
+            const ThreadScope scope(threads);
             double explicit_wall = 0.0;
             for (const TimeStepping mode : {TimeStepping::explicit_waves, TimeStepping::semi_implicit}) {
                 std::vector<double> ns, dt, share[kFlowStages], solves, newton, krylov, temperature;

@@ -17,13 +17,13 @@
 // hour, most of it the three explicit runs): `make bench`.
 //
 // Run: build/bench/bench_tumbler [--data DIR]
-#include "core/output.hpp"
+#include "core/threads.hpp"
 #include "flow/flow_solver.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
+#include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
 
-#include <omp.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -142,8 +142,8 @@ void write_modes(const verify::ProgramOptions& options, const std::vector<std::p
 
 int main(int argc, char** argv) {
     const auto options = verify::parse_program_options(argc, argv);
-    const int threads = std::getenv("OMP_NUM_THREADS") ? omp_get_max_threads() : 2;
-    omp_set_num_threads(threads);
+    const int threads = std::getenv("OMP_NUM_THREADS") ? max_threads() : 2;
+    const ThreadScope scope(threads);
     const std::string dir = options.data_dir;
     std::vector<double> flow, flow_explicit, coupled;
     DataTable times;

@@ -1,8 +1,8 @@
 #include "harness/doc_figures.hpp"
 
-#include "core/output.hpp"
 #include "harness/doc_blocks.hpp"
 #include "harness/text_pattern.hpp"
+#include "run/output.hpp"
 
 #include <cmath>
 #include <cstdint>

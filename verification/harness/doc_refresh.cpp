@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 namespace fs = std::filesystem;
 

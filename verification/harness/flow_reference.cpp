@@ -1,11 +1,11 @@
 #include "harness/flow_reference.hpp"
 
 #include "closures/closures.hpp"
+#include "core/threads.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_roots.h>
-#include <omp.h>
 
 #include <array>
 #include <cmath>
@@ -88,7 +88,7 @@ std::vector<double> lithostatic_profile(const Material& m, const std::function<d
 
 FlowProgram flow_program(int argc, char** argv) {
     ProgramOptions options = parse_program_options(argc, argv);
-    omp_set_num_threads(1);
+    static const ThreadScope one(1);  // the program runs on one thread
     return {options, Material::glass_substitute()};
 }
 

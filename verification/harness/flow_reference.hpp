@@ -1,7 +1,7 @@
 // Independent references shared by the flow verification programs (verify_flow_*.cpp): the
 // equation of state inverted with GSL's Brent root finder, the lithostatic balance
 // dp/ds = Phi(p) |g| integrated with GSL odeiv2, and small helpers to set up and run a column.
-// Nothing here calls the solver's own inversion (flow_run/bed.cpp) or its discrete equilibrium.
+// Nothing here calls the solver's own inversion (drum/bed.cpp) or its discrete equilibrium.
 #pragma once
 
 #include "closures/material.hpp"

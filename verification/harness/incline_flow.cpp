@@ -1,8 +1,8 @@
 #include "harness/incline_flow.hpp"
 
 #include "closures/closures.hpp"
+#include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_run/bed.hpp"
 #include "harness/flow_reference.hpp"
 
 #include <algorithm>

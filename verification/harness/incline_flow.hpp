@@ -7,10 +7,10 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "core/output.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_fields/flow_settings.hpp"
 #include "harness/program.hpp"
+#include "run/output.hpp"
 
 #include <vector>
 

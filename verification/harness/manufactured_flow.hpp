@@ -18,8 +18,8 @@
 
 #include "closures/material.hpp"
 #include "core/grid.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "flow/flow_solver.hpp"
-#include "flow_fields/flow_settings.hpp"
 #include "harness/program.hpp"
 
 #include <array>

@@ -1,4 +1,4 @@
-// A data file of the project's format (core/output.hpp: a first line "# name1 name2 ...", further
+// A data file of the project's format (run/output.hpp: a first line "# name1 name2 ...", further
 // "#" lines, then rows of numbers) read back by column name: the studies and verification programs
 // that read what a run wrote.
 #pragma once

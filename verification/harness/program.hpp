@@ -2,7 +2,7 @@
 //   PROGRAM [--data DIR]     DIR receives the .dat files for the figures (default build/data).
 #pragma once
 
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 #include <functional>
 #include <map>
@@ -28,7 +28,7 @@ std::vector<std::vector<double>> read_rows(const std::string& path);
 std::map<std::string, double> last_row_of(const std::string& text);
 std::map<std::string, double> last_row(const std::string& path);
 
-/// Writes `table` to DIR/name (atomically, see core/output.hpp).
+/// Writes `table` to DIR/name (atomically, see run/output.hpp).
 void write_data(const ProgramOptions& options, const std::string& name, const DataTable& table);
 
 /// The median of `values` (the upper one of the middle two for an even count; benchmarks).

@@ -1,6 +1,6 @@
 // Whether two runs wrote the same files: every file of one output directory byte-identical to the
 // other's, but for the columns that time the run (a resumed run's checks, verify_resume and
-// tests/test_run_checkpoints.cpp).
+// tests/run/run_checkpoints.cpp).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "harness/side_by_side.hpp"
+#include "core/threads.hpp"
 
-#include <omp.h>
 #include <time.h>
 
 #include <algorithm>
@@ -24,7 +24,7 @@ void run_side_by_side(int jobs, int lanes, const std::function<void(int)>& work)
     std::exception_ptr first;
     std::mutex guard;
     auto lane = [&] {
-        omp_set_num_threads(1);  // this lane's parallel regions, and Eigen's, get one thread
+        const ThreadScope one(1);  // this lane's parallel regions, and Eigen's, get one thread
         for (int j; !failed && (j = next++) < jobs;) {
             try {
                 work(j);

@@ -1,6 +1,6 @@
 #include "study/dt_study.hpp"
 
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 #include <algorithm>
 #include <cmath>

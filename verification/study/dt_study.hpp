@@ -5,7 +5,7 @@
 //
 // Parts, per [flow] transport and grid:
 //   no-feedback  [coupling] packing_feedback = false: the flow does not see phi, so its angle and
-//                layer are the flow alone's (tests/test_coupled_tumbler.cpp checks the identity)
+//                layer are the flow alone's (tests/coupled/coupled_tumbler.cpp checks the identity)
 //                and the pattern is carried and segregated by that flow;
 //   feedback     the full model (the paper's run): Phi_rcp and Phi_co follow phi_hat.
 // Per part, transport, grid and quantity: the values at each dt_max with their sampling errors (the

@@ -1,9 +1,9 @@
 #include "study/fig7_core.hpp"
 
-#include "core/output.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "coupled/coupled_tumbler.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "harness/check_table.hpp"
-#include "tumbler/coupled_tumbler.hpp"
+#include "run/output.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include "study/fig7_report.hpp"
 
-#include "core/output.hpp"
+#include "run/output.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
 #include "study/fig7_study.hpp"
 
 #include "core/error.hpp"
-#include "core/output.hpp"
+#include "core/threads.hpp"
+#include "drum/drum.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
 #include "harness/time_series.hpp"
+#include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
-#include "tumbler/drum.hpp"
 
-#include <omp.h>
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -141,7 +141,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text && fs::exists(dir + "/summary.dat");
     if (!reuse) {
         write_file_atomically(scene_path, text);
-        omp_set_num_threads(o.threads);
+        const ThreadScope threads(o.threads);
         // A finished run of this scene and build is only written out again, an interrupted one
         // continues from its checkpoint, any other runs from t = 0 (docs/checkpoints.md): a killed study loses at most a
         // checkpoint interval per run.
@@ -152,7 +152,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     const NamedTable summary = read_named(dir + "/summary.dat"), history = read_named(dir + "/history.dat");
     const std::vector<double>& s = summary.last();
     // The run's wall and CPU seconds over all its parts (on one thread its thread's alone: other runs
-    // share the process; core/progress.hpp run_cpu_seconds).
+    // share the process; run/progress.hpp run_cpu_seconds).
     r.wall = summary.at(s, "wall_seconds"), r.cpu = summary.at(s, "cpu_seconds");
     r.steps = summary.at(s, "steps");
     r.dt_max_share = summary.at(s, "steps_dt_max") / r.steps;

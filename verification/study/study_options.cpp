@@ -2,7 +2,7 @@
 
 #include "core/choice.hpp"
 #include "core/error.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "flow/fields/flow_settings.hpp"
 #include "harness/side_by_side.hpp"
 #include "scenes/tumbler.hpp"
 #include "study/fig7_report.hpp"

@@ -1,8 +1,8 @@
-#include "flow_diffusion/coupled_viscosity.hpp"
+#include "flow/diffusion/coupled_viscosity.hpp"
 
 #include "core/error.hpp"
 #include "core/threads.hpp"
-#include "flow_diffusion/diffusion_faces.hpp"
+#include "flow/diffusion/diffusion_faces.hpp"
 
 #include <algorithm>
 

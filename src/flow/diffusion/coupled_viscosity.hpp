@@ -9,7 +9,7 @@
 //
 // Every velocity component u_b solves
 //     Phi u_new - dt sum_axis d/dx_a (eta d u_new/dx_a) = Phi u      (eqs. 9-11, stress eta grad u)
-// with the same discretisation as the line solves of flow_diffusion/viscosity.hpp (face coefficient the
+// with the same discretisation as the line solves of flow/diffusion/viscosity.hpp (face coefficient the
 // harmonic mean of the cells' eta, no-slip walls at h/2 with the wall's velocity on moving walls
 // of the domain boundary, empty cells at rest), but without splitting the axes. The split
 // step (Lie/ADI) multiplies the responses of the axes: a mode with viscous rates a = dt eta k_x^2/Phi
@@ -23,10 +23,10 @@
 // SimplicialLDLT ([flow] factorisation; the cost of each: docs/flow_solver_choices.md).
 #pragma once
 
-#include "flow_fields/cell_pattern.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/fields/cell_pattern.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
 #include "linalg/supernodal_ldlt.hpp"
 
 #include <Eigen/Dense>

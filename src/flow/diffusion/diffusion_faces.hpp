@@ -1,6 +1,6 @@
 // The face rules of the flow solver's diffusion operators, in one place for the viscosity (split
-// line solves, flow_diffusion/viscosity.hpp, and coupled, flow_diffusion/coupled_viscosity.hpp), the temperature's
-// conduction and viscous heating (flow_diffusion/temperature.hpp) and the velocity gradient
+// line solves, flow/diffusion/viscosity.hpp, and coupled, flow/diffusion/coupled_viscosity.hpp), the temperature's
+// conduction and viscous heating (flow/diffusion/temperature.hpp) and the velocity gradient
 // (flow/velocity_gradient.hpp); docs/flow_solver.md Sect. 2, viscosity.
 //
 //   solves      nothing: the conductance of a face and the value a wall imposes
@@ -16,7 +16,7 @@
 #pragma once
 
 #include "core/grid.hpp"
-#include "flow_fields/flow_settings.hpp"
+#include "flow/fields/flow_settings.hpp"
 
 #include <cstddef>
 

@@ -1,4 +1,4 @@
-#include "flow_diffusion/diffusion_lines.hpp"
+#include "flow/diffusion/diffusion_lines.hpp"
 
 namespace granseg {
 

@@ -13,8 +13,8 @@
 // rows. The matrices are M-matrices: positive data give positive solutions.
 #pragma once
 
-#include "flow_diffusion/diffusion_faces.hpp"
-#include "flow_fields/flow_mesh.hpp"
+#include "flow/diffusion/diffusion_faces.hpp"
+#include "flow/fields/flow_mesh.hpp"
 #include "linalg/tridiagonal_lines.hpp"
 
 #include <vector>

@@ -1,9 +1,9 @@
-#include "flow_diffusion/temperature.hpp"
+#include "flow/diffusion/temperature.hpp"
 
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/threads.hpp"
-#include "flow_diffusion/diffusion_faces.hpp"
+#include "flow/diffusion/diffusion_faces.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
 

@@ -25,11 +25,11 @@
 // iterations at any dt.
 #pragma once
 
-#include "core/state_io.hpp"
-#include "flow_fields/cell_pattern.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/fields/cell_pattern.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
+#include "run/state_io.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -57,7 +57,7 @@ private:
     Eigen::VectorXd rhs_, T_, change_;  // per row: right-hand side, T, the change of T (the next guess)
 
 public:
-    /// Saves or restores (core/state_io.hpp) the warm start of the next solve.
+    /// Saves or restores (run/state_io.hpp) the warm start of the next solve.
     void checkpoint(StateIO& io) { io("change", change_); }
 };
 

@@ -1,4 +1,4 @@
-#include "flow_diffusion/viscosity.hpp"
+#include "flow/diffusion/viscosity.hpp"
 
 namespace granseg {
 

@@ -10,15 +10,15 @@
 // With the asymmetric stress eta grad u every velocity component obeys
 //     Phi (u_new - u)/dt = sum_axis d/dx_a (eta d u_new/dx_a),
 // which has no mixed derivatives; the axes are taken one after the other (Lie/ADI splitting),
-// each as tridiagonal line solves (flow_diffusion/diffusion_lines.hpp). No-slip walls, moving walls of the
+// each as tridiagonal line solves (flow/diffusion/diffusion_lines.hpp). No-slip walls, moving walls of the
 // domain boundary with their tangential velocity; eta from the start of the step (linearly
 // implicit, at the effective pressure). Then Phi u = Phi u_new.
 #pragma once
 
-#include "flow_diffusion/diffusion_lines.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/diffusion/diffusion_lines.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
 
 #include <vector>
 

@@ -1,58 +1,27 @@
-#include "flow_faces/convection.hpp"
+#include "flow/faces/convection.hpp"
 
 #include "core/error.hpp"
 #include "core/threads.hpp"
-#include "flow_faces/hllc.hpp"
-#include "flow_fields/face_balance.hpp"
+#include "flow/faces/hllc.hpp"
+#include "flow/fields/face_balance.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace granseg {
 
-// Longer than most functions, for a reason: the face kernel is a lambda over the raw pointers set
-// up here, inlined into the loops of both face layouts below (x faces inside rows, y and z faces
-// between rows); split, those pointers would travel as a dozen parameters.
-void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl, const Potential& potential,
-                      const AxisLoads& loads, AxisFaces& out) {
+namespace {
+
+/// Calls face(f, lo, hi) for every face of axis a next to an inside cell, f between cells lo
+/// (below) and hi (above): x faces inside each row, y and z faces in the layers between rows. On
+/// a wall the missing cell's index is the inside one's; on a periodic axis the boundary faces join
+/// the first and the last cell.
+template <class Face>
+void for_each_face(const FlowMesh& mesh, int a, const Face& face) {
     const Grid& grid = mesh.grid;
-    const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
     const std::size_t nx = grid.n[0], ny = grid.n[1];
-    const double *Phi = state.Phi.data(), *un = state.u[a].data(), *ut1 = state.u[t1].data(), *ut2 = state.u[t2].data();
-    const double *T = state.T.data(), *p = cl.p.data(), *cs = cl.c.data(), *psi = potential.cell.data();
-    const double *load = loads.load.data(), *carry = loads.carry.data(), *psi_face = potential.face[a].data();
-    const unsigned char* kind = mesh.face_kind[a].data();
-    double *mass = out.mass.data(), *energy = out.energy.data(), *mom_hi = out.mom[a].data();
-    double *mom_lo = out.mom_below.data(), *mom_t1 = out.mom[t1].data(), *mom_t2 = out.mom[t2].data();
-    double *p_face = out.p.data(), *speed = out.speed.data();
     const long n_a = grid.n[a];
-    const bool periodic = grid.periodic[a];  // used by the x faces
-
-    // Face f between cells lo (below) and hi (above); on a wall the missing cell index is the
-    // inside one and its state is replaced by the mirror of the inside state.
-    auto face = [=](std::size_t f, std::size_t lo, std::size_t hi) __attribute__((always_inline)) {
-        const unsigned char k = kind[f];
-        FaceState L{Phi[lo], un[lo], ut1[lo], ut2[lo], T[lo], p[lo], cs[lo]};
-        FaceState R{Phi[hi], un[hi], ut1[hi], ut2[hi], T[hi], p[hi], cs[hi]};
-        double corr_L = hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
-        double corr_R = hydrostatic_reconstruction(R, psi_face[f] - psi[hi], load[hi], carry[hi]);
-        if (k == kWallAbove) R = mirror(L), corr_R = 0.0;
-        if (k == kWallBelow) L = mirror(R), corr_L = 0.0;
-        const FaceFlux F = hllc_flux(L, R);
-        // Fluxes of mass, energy and tangential momentum vanish exactly on walls. (The face loops
-        // are left scalar: at -O2, 2-wide vectors computing every branch of the HLLC flux were
-        // slower than the branches, measured.)
-        const double interior = k == kInterior ? 1.0 : 0.0, face = k == kNoFace ? 0.0 : 1.0;
-        mass[f] = interior * F.mass;
-        energy[f] = interior * F.energy;
-        mom_t1[f] = interior * F.mom_t1;
-        mom_t2[f] = interior * F.mom_t2;
-        mom_hi[f] = face * (F.mom_n + corr_R);
-        mom_lo[f] = face * (F.mom_n + corr_L);
-        p_face[f] = face * std::max(0.0, F.p_star);
-        speed[f] = face * std::max(std::fabs(L.u_n) + L.c, std::fabs(R.u_n) + R.c);
-    };
-
+    const bool periodic = grid.periodic[a];
     if (a == 0) {  // faces inside each row, from the first inside cell's lower face to the last one's upper face
         parallel_for(mesh.parallel, mesh.rows, [&](std::size_t r) {
             if (mesh.row_lo[r] >= mesh.row_hi[r]) return;  // no inside cell in this row
@@ -79,6 +48,48 @@ void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const
         const std::size_t f0 = a == 1 ? nx * (l + (ny + 1) * o) : nx * (o + ny * l);
         for (int i = i0; i < i1; ++i) face(f0 + i, nx * r_lo + i, nx * r_hi + i);
     });
+}
+
+}  // namespace
+
+// The face kernel is a lambda over the raw pointers set up here, inlined into the loops of both
+// face layouts (for_each_face); split further, those pointers would travel as a dozen parameters.
+void hllc_face_fluxes(const FlowMesh& mesh, int a, const FlowState& state, const CellClosures& cl, const Potential& potential,
+                      const AxisLoads& loads, AxisFaces& out) {
+    const int t1 = (a + 1) % 3, t2 = (a + 2) % 3;
+    const double *Phi = state.Phi.data(), *un = state.u[a].data(), *ut1 = state.u[t1].data(), *ut2 = state.u[t2].data();
+    const double *T = state.T.data(), *p = cl.p.data(), *cs = cl.c.data(), *psi = potential.cell.data();
+    const double *load = loads.load.data(), *carry = loads.carry.data(), *psi_face = potential.face[a].data();
+    const unsigned char* kind = mesh.face_kind[a].data();
+    double *mass = out.mass.data(), *energy = out.energy.data(), *mom_hi = out.mom[a].data();
+    double *mom_lo = out.mom_below.data(), *mom_t1 = out.mom[t1].data(), *mom_t2 = out.mom[t2].data();
+    double *p_face = out.p.data(), *speed = out.speed.data();
+
+    // Face f between cells lo (below) and hi (above); on a wall the missing cell index is the
+    // inside one and its state is replaced by the mirror of the inside state.
+    auto face = [=](std::size_t f, std::size_t lo, std::size_t hi) __attribute__((always_inline)) {
+        const unsigned char k = kind[f];
+        FaceState L{Phi[lo], un[lo], ut1[lo], ut2[lo], T[lo], p[lo], cs[lo]};
+        FaceState R{Phi[hi], un[hi], ut1[hi], ut2[hi], T[hi], p[hi], cs[hi]};
+        double corr_L = hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
+        double corr_R = hydrostatic_reconstruction(R, psi_face[f] - psi[hi], load[hi], carry[hi]);
+        if (k == kWallAbove) R = mirror(L), corr_R = 0.0;
+        if (k == kWallBelow) L = mirror(R), corr_L = 0.0;
+        const FaceFlux F = hllc_flux(L, R);
+        // Fluxes of mass, energy and tangential momentum vanish exactly on walls. (The face loops
+        // are left scalar: at -O2, 2-wide vectors computing every branch of the HLLC flux were
+        // slower than the branches, measured.)
+        const double interior = k == kInterior ? 1.0 : 0.0, face = k == kNoFace ? 0.0 : 1.0;
+        mass[f] = interior * F.mass;
+        energy[f] = interior * F.energy;
+        mom_t1[f] = interior * F.mom_t1;
+        mom_t2[f] = interior * F.mom_t2;
+        mom_hi[f] = face * (F.mom_n + corr_R);
+        mom_lo[f] = face * (F.mom_n + corr_L);
+        p_face[f] = face * std::max(0.0, F.p_star);
+        speed[f] = face * std::max(std::fabs(L.u_n) + L.c, std::fabs(R.u_n) + R.c);
+    };
+    for_each_face(mesh, a, face);
 }
 
 void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, const FlowSource& source, double t,

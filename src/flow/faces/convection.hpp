@@ -1,5 +1,5 @@
 // The convective part of a step (eqs. 8, 9, 14 without viscosity, conduction and dissipation):
-// the face fluxes of one axis by the HLLC flux with hydrostatic reconstruction (flow_faces/hllc.hpp;
+// the face fluxes of one axis by the HLLC flux with hydrostatic reconstruction (flow/faces/hllc.hpp;
 // walls are mirror states), and the conservative update of (Phi, Phi u, Phi T) from the fluxes
 // with the body forces the potential does not carry (Coriolis, gravity along inactive or
 // periodic axes) and optional source terms. docs/flow_solver_choices.md, "The explicit step".
@@ -9,14 +9,14 @@
 //               the face fluxes, Frame, sources, t, dt (update)
 //   outputs     AxisFaces of an axis; the state after the update (Phi, Phi u, Phi T, u, T)
 //   invariants  mass, Phi T and tangential momentum fluxes are exactly 0 on walls; the update of
-//               Phi is the coupling identity Phi_new = Phi - dt div M (flow_fields/face_balance.hpp)
+//               Phi is the coupling identity Phi_new = Phi - dt div M (flow/fields/face_balance.hpp)
 #pragma once
 
 #include "core/face_fields.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
-#include "flow_fields/frame.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
+#include "flow/fields/frame.hpp"
 
 #include <vector>
 
@@ -40,7 +40,7 @@ void explicit_update(const FlowMesh& mesh, const FlowSettings& settings, const F
 /// semi-implicit step's transport, whose predictor already applied the forces.
 void transport_update(const FlowMesh& mesh, const FlowSettings& settings, double dt, const FlowFaces& faces, FlowState& state);
 
-/// Phi = Phi - dt div M in every inside cell (mass_balance, flow_fields/face_balance.hpp): what a consumer
+/// Phi = Phi - dt div M in every inside cell (mass_balance, flow/fields/face_balance.hpp): what a consumer
 /// of the flow's hand-over (flow/flow_solver.hpp) gets bit for bit as the flow's Phi after the step,
 /// and the mass balance of kinematic set-ups without a flow solver. An empty M[axis] carries
 /// nothing; non-periodic domain-boundary faces count (open boundaries).

@@ -1,7 +1,7 @@
-#include "flow_faces/loads.hpp"
+#include "flow/faces/loads.hpp"
 
 #include "core/threads.hpp"
-#include "flow_faces/hllc.hpp"
+#include "flow/faces/hllc.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,32 +61,39 @@ void face_potential(const FlowMesh& mesh, const Frame& frame, double t, int a, c
 // Longer than most functions, for a reason: the cell kernel is a lambda over the raw pointers and
 // the sweep direction set up here, inlined into the loops of both layouts below (along x inside
 // rows, along y and z across rows in blocks of columns).
+namespace {
+
+/// Loads pass down chains of unsupported cells along axis a with the weight
+/// w = max(0, |g_a| - max_(b != a) |g_b|)/|g|: fully along gravity when it is aligned with the
+/// axis (a stack of loose cells, dust on a partly filled cell), not at all when gravity is
+/// diagonal; along a row across gravity a chain would make loose surface cells a strut that
+/// leans on the wall instead of sliding down the slope. w varies continuously with the
+/// direction of gravity as it turns in the drum. `g_a`: gravity along a (0 on a periodic axis).
+double chain_weight(const FlowMesh& mesh, const Vec3& g, double g_a, int a) {
+    double g_other = 0.0, g_norm = 0.0;
+    for (int b = 0; b < 3; ++b) {
+        if (!mesh.active[b] || mesh.grid.periodic[b]) continue;
+        g_norm += g[b] * g[b];
+        if (b != a) g_other = std::max(g_other, std::fabs(g[b]));
+    }
+    return g_norm > 0.0 ? std::max(0.0, std::fabs(g_a) - g_other) / std::sqrt(g_norm) : 0.0;
+}
+
+}  // namespace
+
+// Per cell: `load`, the weight its downhill face carries beyond p + Phi |d_psi| (flow/faces/hllc.hpp),
+// and `carry`, the pressure an unsupported cell passes on at its uphill face. A cell is
+// unsupported when p <= Phi rise (rise: potential rise to its uphill face); then its uphill
+// face carries what rests on it (the downhill face pressure of the cell above, if that cell
+// holds material) and its downhill face adds that to its own unsupported weight. Cells are
+// visited in the direction of gravity along the axis so that loads pass down chains of
+// unsupported cells (dust on a partly filled surface cell), scaled by chain_weight per link.
 void unsupported_loads(const FlowMesh& mesh, const FlowSettings& settings, const Frame& frame, double t, int a,
                        const FlowState& state, const CellClosures& closures, const Potential& potential, AxisLoads& loads) {
     const Grid& grid = mesh.grid;
     const Vec3 g = frame.gravity_at(t);
     const double g_a = !grid.periodic[a] ? g[a] : 0.0;
-    // Loads pass down chains of unsupported cells along an axis with the weight
-    // w = max(0, |g_a| - max_(b != a) |g_b|)/|g|: fully along gravity when it is aligned with the
-    // axis (a stack of loose cells, dust on a partly filled cell), not at all when gravity is
-    // diagonal; along a row across gravity a chain would make loose surface cells a strut that
-    // leans on the wall instead of sliding down the slope. w varies continuously with the
-    // direction of gravity as it turns in the drum.
-    double g_other = 0.0, g_norm = 0.0;
-    for (int b = 0; b < 3; ++b) {
-        if (!mesh.active[b] || grid.periodic[b]) continue;
-        g_norm += g[b] * g[b];
-        if (b != a) g_other = std::max(g_other, std::fabs(g[b]));
-    }
-    const double weight = g_norm > 0.0 ? std::max(0.0, std::fabs(g_a) - g_other) / std::sqrt(g_norm) : 0.0;
-
-    // Per cell: `load`, the weight its downhill face carries beyond p + Phi |d_psi| (flow_faces/hllc.hpp),
-    // and `carry`, the pressure an unsupported cell passes on at its uphill face. A cell is
-    // unsupported when p <= Phi rise (rise: potential rise to its uphill face); then its uphill
-    // face carries what rests on it (the downhill face pressure of the cell above, if that cell
-    // holds material) and its downhill face adds that to its own unsupported weight. Cells are
-    // visited in the direction of gravity along the axis so that loads pass down chains of
-    // unsupported cells (dust on a partly filled surface cell), scaled by `weight` per link.
+    const double weight = chain_weight(mesh, g, g_a, a);
     const std::size_t nx = grid.n[0], ny = grid.n[1];
     double *load = loads.load.data(), *carry = loads.carry.data(), *downhill = loads.downhill.data();
     const double *Phi = state.Phi.data(), *p = closures.p.data(), *psi = potential.cell.data();

@@ -1,5 +1,5 @@
 // The potential psi and the loads of the hydrostatic reconstruction (docs/flow_solver.md Sect. 2, forces;
-// the reconstruction itself is hydrostatic_reconstruction() in flow_faces/hllc.hpp).
+// the reconstruction itself is hydrostatic_reconstruction() in flow/faces/hllc.hpp).
 //
 //   solves      nothing over time: psi and the unsupported loads at t^n
 //   inputs      FlowMesh, FlowSettings, Frame, t; Phi, p, Phi_co
@@ -7,7 +7,7 @@
 //   invariants  load, carry, downhill >= 0, and 0 in empty cells
 //
 // psi = -g . x - omega^2 |r|^2/2 (gravity along the bounded active axes and the centrifugal
-// potential of the rotating frame, flow_fields/frame.hpp) is piecewise constant per cell; a face takes
+// potential of the rotating frame, flow/fields/frame.hpp) is piecewise constant per cell; a face takes
 // the mean of its two cells (a wall's ghost is the mirror cell). A cell whose own pressure cannot
 // carry its weight up to its uphill face (p <= Phi rise: the partly filled surface cell, dust) is
 // "unsupported": its downhill face carries the missing weight (`load`), and the load resting on
@@ -16,10 +16,10 @@
 // (assumption F7).
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
-#include "flow_fields/frame.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
+#include "flow/fields/frame.hpp"
 
 #include <vector>
 

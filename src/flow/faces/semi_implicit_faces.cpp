@@ -1,8 +1,8 @@
-#include "flow_faces/semi_implicit_faces.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
 
-#include "flow_faces/hllc.hpp"
-#include "flow_faces/transport_flux.hpp"
-#include "flow_fields/face_balance.hpp"
+#include "flow/faces/hllc.hpp"
+#include "flow/faces/transport_flux.hpp"
+#include "flow/fields/face_balance.hpp"
 #include "transport/muscl_hancock.hpp"
 
 #include <algorithm>

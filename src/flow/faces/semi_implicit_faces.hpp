@@ -6,7 +6,7 @@
 // scheme.
 //
 //   solves      the face kernels of the semi-implicit step (predictor, face predictor, corrected
-//               faces and fluxes; the pressure equation itself is flow_pressure/pressure_solver.hpp)
+//               faces and fluxes; the pressure equation itself is flow/pressure/pressure_solver.hpp)
 //   inputs      FlowMesh, the state and closures (at t^n, or u* after the predictor), psi, the
 //               loads, the force part A, dt, the pressure increments dp
 //   outputs     AxisPressureFaces (p', D, U*, donor, K, M_x); AxisFaces; r_c; Phi after the step
@@ -14,8 +14,8 @@
 //               at rest stays at rest); a dust cell loses at most kDustOutflow of its Phi a step
 //
 // Per face between the cells lo and hi of one axis (cell size h, Phi_f = (Phi_lo + Phi_hi)/2):
-//   reconstructed pressures p'_lo, p'_hi of the two cells at the face (flow_faces/hllc.hpp, with the
-//     loads of flow_faces/loads.hpp) and the face force D = p'_lo - p'_hi: in the discrete lithostatic
+//   reconstructed pressures p'_lo, p'_hi of the two cells at the face (flow/faces/hllc.hpp, with the
+//     loads of flow/faces/loads.hpp) and the face force D = p'_lo - p'_hi: in the discrete lithostatic
 //     balance D = 0 on every face, so a bed at rest stays at rest (well balanced). On a dilute
 //     face (both cells below half their Phi_co) |D| is limited to 2 |g| h Phi_f, the free fall of
 //     its material: loads passed on through dust would otherwise accelerate nearly nothing;
@@ -42,10 +42,10 @@
 //    that gives clearly less (then the solve is repeated), so that no cell gives much more than it
 //    holds times |U| dt/h. The explicit flux M_x = Phi_d U* and
 //    the coupling K = (dt/h)^2 Phi_d/Phi_f define the pressure equation
-//    (flow_pressure/pressure_solver.hpp) for the increments dp.
+//    (flow/pressure/pressure_solver.hpp) for the increments dp.
 // 3. Corrected faces: U = U* - dt (dp_hi - dp_lo)/(h Phi_f) (eq. 9 for the increment), M = Phi_d U
 //    (the hand-over; 0 on walls); the fluxes of momentum and Phi T are M times the donor's values
-//    (all three velocity components, flow_faces/transport_flux.hpp), and each cell gets its share of the
+//    (all three velocity components, flow/faces/transport_flux.hpp), and each cell gets its share of the
 //    increment force dp_lo - dp_hi by the masses at the end of the step.
 // Dust (a cell below kDust Phi_co, assumption F11): a face between two dust cells stays explicit
 // (K = 0, U = U*: the increments there are only an extension of the neighbours' and would push on
@@ -55,9 +55,9 @@
 // accelerating under gravity).
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
 
 #include <array>
 #include <vector>
@@ -106,7 +106,7 @@ void face_donors(const FlowMesh& mesh, const FlowSettings& settings, int axis, d
                  const CellClosures& closures, const MusclHancock* reconstruction, AxisPressureFaces& pf);
 
 /// Part 2, per inside cell: the mass change of the explicit fluxes,
-/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h (flow_fields/face_balance.hpp).
+/// r_c = -dt sum_axis (M_x[upper] - M_x[lower])/h (flow/fields/face_balance.hpp).
 void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change);
 
 /// Marks the faces whose mass flux leaves a cell that gives the face clearly less than the donor it
@@ -135,12 +135,12 @@ void cap_dust_outflow(const FlowMesh& mesh, double dt, const FlowState& state, c
                       std::vector<double>& scale, FlowFaces& faces);
 
 /// Phi_after = Phi - dt sum_axes (M[upper] - M[lower])/h per inside cell (mass_balance,
-/// flow_fields/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
+/// flow/fields/face_balance.hpp): Phi at the end of the step, for the shares of the increment force.
 void volume_fraction_after(const FlowMesh& mesh, double dt, const std::vector<double>& Phi, const FlowFaces& faces,
                            std::vector<double>& Phi_after);
 
 /// Part 3b for `axis`: with M = faces.mass (the hand-over; 0 on walls), the fluxes of momentum and
-/// Phi T as M times the donor's values (all three velocity components, flow_faces/transport_flux.hpp),
+/// Phi T as M times the donor's values (all three velocity components, flow/faces/transport_flux.hpp),
 /// and the corrections of the increments: each cell gets the share Phi_after_cell/(Phi_after_lo +
 /// Phi_after_hi) of the increment force dp_lo - dp_hi, so both end the step with the same velocity
 /// change (shares by the masses at t^n once gave dust next to a cell filling up in this step

@@ -1,5 +1,5 @@
 // The convective flux of eqs. (8), (9), (14) across one face when the face mass flux M is known
-// (the semi-implicit step, flow_faces/semi_implicit_faces.hpp, where M comes from the implicit pressure
+// (the semi-implicit step, flow/faces/semi_implicit_faces.hpp, where M comes from the implicit pressure
 // equation): the donor cell, the one the mass leaves, carries its velocity (all three components)
 // and temperature (first-order upwind, so T and u stay convex combinations of old values whenever
 // no cell loses more than its mass), and the face pressure p* adds to the normal momentum flux.
@@ -14,11 +14,11 @@
 // difference M (u_n - U) dt/h in its remaining mass, a kick that grows without bound as the cell
 // empties (dust of a collapsing heap once flew off that way: docs/history.md).
 //
-// Same orientation and result type as the HLLC flux of flow_faces/hllc.hpp: L is the cell below the
+// Same orientation and result type as the HLLC flux of flow/faces/hllc.hpp: L is the cell below the
 // face along the axis, R the cell above.
 #pragma once
 
-#include "flow_faces/hllc.hpp"
+#include "flow/faces/hllc.hpp"
 
 namespace granseg {
 

@@ -7,14 +7,14 @@
 //               together (couple())
 //
 // Shared by the pressure
-// equation, flow_pressure/pressure_solver.hpp, and the coupled viscosity, flow_diffusion/coupled_viscosity.hpp): one
+// equation, flow/pressure/pressure_solver.hpp, and the coupled viscosity, flow/diffusion/coupled_viscosity.hpp): one
 // row per inside cell, an entry on the diagonal and one for each pair of cells meeting at an
 // interior face (a weighted graph Laplacian plus a diagonal), built once per mesh with zero values;
 // and where each row's diagonal and each face's two off-diagonal entries sit in the value array, so
 // that the values can be rewritten every step without touching the pattern.
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
+#include "flow/fields/flow_mesh.hpp"
 
 #include <Eigen/SparseCore>
 

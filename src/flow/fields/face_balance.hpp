@@ -1,10 +1,10 @@
 // The balance of a cell's face fluxes, written once for every kernel that needs it: the updates
-// and the hand-over's mass balance (flow_faces/convection.hpp), the bounds of the time step
+// and the hand-over's mass balance (flow/faces/convection.hpp), the bounds of the time step
 // (flow/time_step.hpp) and the semi-implicit step's explicit mass change, dust cap and Phi after
-// the step (flow_faces/semi_implicit_faces.hpp).
+// the step (flow/faces/semi_implicit_faces.hpp).
 //
 //   solves      nothing over time: per cell, sums over its faces
-//   inputs      a face field per axis (one value per face, flow_fields/flow_mesh.hpp order), a weight
+//   inputs      a face field per axis (one value per face, flow/fields/flow_mesh.hpp order), a weight
 //               per axis (1/h for a rate, dt/h for a change; 0 leaves an inactive axis out), and
 //               the cell (its index i in the row and the AxisRow of each axis)
 //   outputs     face_balance    sum_axis (F[upper face] - F[lower face]) w_axis  (w = 1/h: div F)
@@ -15,7 +15,7 @@
 //               of flow/flow_solver.hpp relies on the update and the hand-over rounding alike)
 #pragma once
 
-#include "flow_fields/flow_mesh.hpp"
+#include "flow/fields/flow_mesh.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "flow_fields/flow_mesh.hpp"
+#include "flow/fields/flow_mesh.hpp"
 
 #include "core/error.hpp"
 #include "core/threads.hpp"

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "core/choice.hpp"
-#include "flow_fields/frame.hpp"
+#include "flow/fields/frame.hpp"
 #include "transport/limiter.hpp"
 
 #include <array>
@@ -43,7 +43,7 @@ inline constexpr Choice<Factorisation> kFactorisations[] = {
 
 /// How the semi-implicit step carries the mass balance: which Phi a face's mass flux M = Phi_d U takes
 /// (docs/flow_solver.md, transport; docs/flow_solver_choices.md, "The transport"). The coupled drum carries phi
-/// with the same scheme (tumbler/coupled_tumbler.hpp).
+/// with the same scheme (coupled/coupled_tumbler.hpp).
 enum class Transport { donor_cell, muscl };
 inline constexpr Choice<Transport> kTransports[] = {
     {Transport::donor_cell, "donor-cell",

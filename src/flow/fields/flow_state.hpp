@@ -17,7 +17,7 @@
 // these as const inputs and write others; the table in flow/flow_solver.hpp lists which.
 #pragma once
 
-#include "core/state_io.hpp"
+#include "run/state_io.hpp"
 
 #include <array>
 #include <vector>

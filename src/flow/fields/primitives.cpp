@@ -1,4 +1,4 @@
-#include "flow_fields/primitives.hpp"
+#include "flow/fields/primitives.hpp"
 
 #include "closures/closures.hpp"
 #include "core/error.hpp"

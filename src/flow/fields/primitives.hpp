@@ -11,9 +11,9 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_settings.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_settings.hpp"
+#include "flow/fields/flow_state.hpp"
 
 #include <vector>
 

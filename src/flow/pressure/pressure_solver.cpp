@@ -1,7 +1,7 @@
-#include "flow_pressure/pressure_solver.hpp"
+#include "flow/pressure/pressure_solver.hpp"
 
 #include "core/threads.hpp"
-#include "flow_pressure/equation_of_state.hpp"
+#include "flow/pressure/equation_of_state.hpp"
 #include "linalg/conjugate_gradients.hpp"
 
 #include <algorithm>

@@ -15,7 +15,7 @@
 //
 // Find the pressure increments dp per inside cell with
 //     F_c(dp) = Phi(p_c + dp_c; T_c) - Phi_c - r_c + sum_faces K_f (dp_c - dp_nb) = 0,
-// where Phi(p; T) is the inverse equation of state (flow_pressure/equation_of_state.hpp), r_c the mass
+// where Phi(p; T) is the inverse equation of state (flow/pressure/equation_of_state.hpp), r_c the mass
 // change of the explicit part of the face mass fluxes, and K_f = (dt/h)^2 Phi_donor/Phi_face >= 0
 // the coupling of the two cells of an interior face (the face mass flux changes by
 // -(dt/h) (Phi_donor/Phi_face) (dp_hi - dp_lo), eq. 9 without convection). Phi(p) is concave and
@@ -40,10 +40,10 @@
 #pragma once
 
 #include "closures/material.hpp"
-#include "flow_faces/semi_implicit_faces.hpp"
-#include "flow_fields/cell_pattern.hpp"
-#include "flow_fields/flow_mesh.hpp"
-#include "flow_fields/flow_state.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
+#include "flow/fields/cell_pattern.hpp"
+#include "flow/fields/flow_mesh.hpp"
+#include "flow/fields/flow_state.hpp"
 #include "linalg/multilevel.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
@@ -94,7 +94,7 @@ private:
     /// The Newton step step_ = -J^-1 F, by conjugate gradients to what the Newton tolerance
     /// needs; returns its iterations, counted as Eigen's CG counts them plus one.
     int newton_step(const FlowMesh& mesh, double tolerance);
-    CellPattern<Matrix> pattern_;                    // inside cells and interior faces (flow_fields/cell_pattern.hpp)
+    CellPattern<Matrix> pattern_;                    // inside cells and interior faces (flow/fields/cell_pattern.hpp)
     Matrix J_, laplacian_;                           // the Jacobian, and its coupling part (same pattern)
     Eigen::VectorXd x_, volume_, slope_, F_, step_;  // per row: dp, Phi(p + dp) and dPhi/dp there, F, Newton step
     Eigen::VectorXd base_, target_;                  // per row: Phi(p) at the start of the solve, r

@@ -1,44 +1,15 @@
-// Core utilities: data tables, atomic output, the grid.
+// The ground of core: the grid (core/grid.hpp) and exact number formats (core/format.hpp).
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "core/grid.hpp"
-#include "core/output.hpp"
 
 #include <boost/test/unit_test.hpp>
 
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 
 using namespace granseg;
 
-BOOST_AUTO_TEST_SUITE(core)
-
-BOOST_AUTO_TEST_CASE(data_table_names_its_columns_first) {
-    DataTable t;
-    t.comment("source: test");
-    t.row({{"z", 0.5}, {"phi", 0.25}});
-    BOOST_TEST(t.str() == "# z phi\n# source: test\n0.5 0.25\n");
-    BOOST_CHECK_THROW(t.row({{"z", 1.0}}), InvariantError);                 // a column missing
-    BOOST_CHECK_THROW(t.row({{"phi", 0.25}, {"z", 0.5}}), InvariantError);  // columns swapped
-    TableRow r{{"z", 1.0}};
-    t.row(r.add("phi", 0.5));
-    BOOST_TEST(t.rows() == 2u);
-}
-
-BOOST_AUTO_TEST_CASE(atomic_write_creates_directories_and_leaves_no_temporary) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("granseg_core_" + std::to_string(::getpid()));
-    write_file_atomically((dir / "a" / "b.dat").string(), "x\n");
-    std::ifstream in(dir / "a" / "b.dat");
-    std::string line;
-    std::getline(in, line);
-    BOOST_TEST(line == "x");
-    int files = 0;
-    for (const auto& e : fs::directory_iterator(dir / "a")) files += e.is_regular_file();
-    BOOST_TEST(files == 1);
-    fs::remove_all(dir);
-}
+BOOST_AUTO_TEST_SUITE(core_grid_and_format_tests)
 
 BOOST_AUTO_TEST_CASE(grid_indexing_and_geometry) {
     const Grid g = Grid::plane_xz(4, 3, -1.0, 0.0, 2.0, 3.0);
