@@ -190,6 +190,7 @@ BOOST_AUTO_TEST_CASE(a_span_in_words_shows_what_rounds_to_it) {
     BOOST_TEST(shows(*shown_number("two hundredths"), 0.018));
     BOOST_TEST(!shown_number("thrice as often").has_value());
     BOOST_TEST(rendered_like(2.7, "twice") == "three times");
+    BOOST_TEST(rendered_like(22.6, "eight times") == "twenty times");
     BOOST_TEST(rendered_like(0.26, "a third") == "a quarter");
     BOOST_TEST(rendered_like(0.011, "two hundredths") == "one hundredth");
 }

@@ -48,6 +48,12 @@ std::string count_words(long n) {
     return std::to_string(n);
 }
 
+/// A whole number as words can say it: to the unit below twenty, to the ten from there.
+long spoken(double value) {
+    const long n = std::lround(value);
+    return n < 20 ? n : 10 * std::lround(value / 10.0);
+}
+
 bool ends_with(const std::string& s, const std::string& tail) {
     return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -71,7 +77,7 @@ std::optional<std::string> in_words_like(double value, const std::string& like) 
     const auto shown = word_number(like);
     if (!shown) return std::nullopt;
     if (like == "twice" || ends_with(like, " times")) {
-        const long n = std::lround(value);
+        const long n = spoken(value);
         return n == 2 ? std::string("twice") : count_words(n) + " times";
     }
     if (ends_with(like, "hundredths") || ends_with(like, "hundredth")) {
@@ -92,7 +98,7 @@ std::optional<std::string> in_words_like(double value, const std::string& like) 
             std::snprintf(buf, sizeof buf, "%.2f", value);
             return std::string(buf);
         }
-    return count_words(std::lround(shown->unit == 10.0 ? value / 10.0 : value) * (shown->unit == 10.0 ? 10 : 1));
+    return count_words(spoken(value));
 }
 
 }  // namespace granseg::verify::docs

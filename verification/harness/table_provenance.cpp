@@ -90,8 +90,14 @@ std::string shown_part(const std::string& table_text) {
 }
 
 std::vector<std::string> physics_changes(const Fingerprints& recorded, const Fingerprints& now) {
+    // In the order of physics_parts (the flow step first), then any part this build does not know.
+    std::vector<std::pair<std::string, std::string>> parts;
+    for (const PhysicsPart& p : physics_parts())
+        if (recorded.count(p.name)) parts.emplace_back(p.name, recorded.at(p.name));
+    for (const auto& [part, fingerprint] : recorded)
+        if (part_title(part) == part) parts.emplace_back(part, fingerprint);
     std::vector<std::string> out;
-    for (const auto& [part, fingerprint] : recorded) {
+    for (const auto& [part, fingerprint] : parts) {
         const auto it = now.find(part);
         const std::string current = it == now.end() ? "none" : it->second;
         if (fingerprint == "unknown")
