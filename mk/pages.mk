@@ -46,9 +46,6 @@ docs-figures:
 # make commands-cost: what the README's two commands cost on a fresh clone of the commit (several
 # minutes: the whole of make verify, then make test), tabled as build/runs/commands_cost.md with its
 # provenance record; make docs-refresh copies it into README.md. Run it on a quiet machine.
-COST_RECORD = $(BUILD)/verification/verify_docs --provenance "make commands-cost" \
-              "tools/commands_cost.sh: make verify, then make test, on a fresh clone" flow drum segregation closures
 commands-cost:
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/verification/verify_docs
 	@mkdir -p $(RUNS)
-	@tools/commands_cost.sh $(RUNS)/commands_cost.md $(COST_RECORD)
+	@tools/commands_cost.sh $(RUNS)/commands_cost.md

@@ -2,11 +2,12 @@
 # make commands-cost: what the README's two commands cost. A fresh clone of the commit checked out
 # (in a scratch directory, removed after) runs `make verify`, then `make test`, each timed by the
 # shell: its wall time and the CPU time of all its processes. Writes the table README.md shows
-# (docs/generated/commands_cost.md once `make docs-refresh` copies it) with its provenance record.
+# (docs/generated/commands_cost.md once `make docs-refresh` copies it) with its provenance record,
+# printed by the clone's own verify_docs (so it names the commit and the physics that were timed).
 # Timings are the machine's that ran it, with its load: run it on a quiet machine.
-#   tools/commands_cost.sh OUTPUT.md RECORD_COMMAND...   (RECORD_COMMAND prints the record)
+#   tools/commands_cost.sh OUTPUT.md
 set -eu
-out=$1; shift
+out=$1
 top=$(git rev-parse --show-toplevel)
 commit=$(git -C "$top" rev-parse HEAD)
 [ -z "$(git -C "$top" status --porcelain --untracked-files=no)" ] ||
@@ -35,7 +36,8 @@ read -r test_wall test_cpu < <(timed test)
   printf "| make test, after make verify | %d min %02d s | %d min %02d s |\n" $((test_wall / 60)) $((test_wall % 60)) $((test_cpu / 60)) $((test_cpu % 60))
   echo
   echo "Written by \`make commands-cost\`: the two commands one after the other on a fresh clone, $cores cores, the 1-minute load before them $load; the cost on the computer that ran them."
-  "$@"
+  "$scratch/clone/build/verification/verify_docs" --provenance "make commands-cost" \
+    "tools/commands_cost.sh: make verify, then make test, on a fresh clone" flow drum segregation closures
 } > "$out.tmp"
 mv "$out.tmp" "$out"
 cat "$out"
