@@ -68,7 +68,7 @@ FULL_PNG     := $(FULL_GP:figures/%.gp=$(BUILD)/figures/%.png)
 RUNS         := $(BUILD)/runs
 
 .PHONY: FORCE all verify test figures fig7 bench figures-full sanitize tsan clean deps \
-        run-verification run-bench docs-figures docs-refresh format format-check
+        run-verification run-bench docs-figures docs-refresh format format-check commands-cost
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
@@ -198,15 +198,21 @@ $(RUNS)/%.seconds: verification/scenes/%.toml $(CLI)
 	t1=$$(date +%s.%N); awk "BEGIN{printf \"%.0f\n\", $$t1 - $$t0}" > $@
 
 # make fig7: the paper's drum (verification/scenes/tumbler.toml) run once, Fig. 7 and its animation
-# drawn; its numbers printed and, with its cost, tabled for README.md (verification/fig7_tables.awk).
+# drawn; its numbers printed and, with its cost, tabled for README.md (verification/fig7_tables.awk),
+# each table with the record of what made it (verify_docs --provenance; docs/checked_pages.md).
 FIG7_PNG := $(filter $(BUILD)/figures/full_fig7%,$(FULL_PNG))
+FIG7_RECORD = $(BUILD)/verification/verify_docs --provenance "make fig7" \
+              "$(CLI) run verification/scenes/tumbler.toml --output-dir $(RUNS)/tumbler" flow drum segregation closures
 fig7: deps
 	@start=$$(date +%s); \
-	$(MAKE) --no-print-directory -j$(JOBS) $(CLI) && $(MAKE) --no-print-directory -j$(JOBS) $(FIG7_PNG) || exit 1; \
+	$(MAKE) --no-print-directory -j$(JOBS) $(CLI) $(BUILD)/verification/verify_docs && \
+	  $(MAKE) --no-print-directory -j$(JOBS) $(FIG7_PNG) || exit 1; \
 	for png in $(FIG7_PNG); do [ -s $$png ] || { echo "fig7: $$png was not rendered"; exit 1; }; done; \
 	if [ $$(stat -c %Y $(RUNS)/tumbler.seconds) -ge $$start ]; then how="this run"; else how="an earlier run, reused"; fi; \
 	echo "fig7: Fig. 7a-d and the animation in $(BUILD)/figures/full_fig7*_tumbler.png (+ .gif) from $(RUNS)/tumbler"; \
+	record=$$($(FIG7_RECORD)) || exit 1; \
 	awk -v cost=$(RUNS)/fig7_cost.md -f verification/fig7_tables.awk $(RUNS)/tumbler/summary.dat > $(RUNS)/fig7_run.md; \
+	for f in $(RUNS)/fig7_run.md $(RUNS)/fig7_cost.md; do echo "$$record" >> $$f; done; \
 	sed -n 's/^| \(.*\) | \(.*\) |$$/fig7: \1: \2/p' $(RUNS)/fig7_run.md | tail -n +2; \
 	echo "fig7: the drum run took $$(cat $(RUNS)/tumbler.seconds) s wall ($$how); make fig7 took $$(( $$(date +%s) - start )) s"
 
@@ -236,9 +242,10 @@ bench: deps
 
 # ---- beyond the two commands (recipes in mk/) ---------------------------------------------------
 # make figures-full: the long studies' figures; make docs-figures: the figures the pages show;
-# make docs-refresh: fresh generated tables into the pages (mk/pages.mk, docs/checked_pages.md).
+# make docs-refresh: fresh generated tables into the pages (mk/pages.mk, docs/checked_pages.md);
+# make commands-cost: what make verify and make test cost on a fresh clone, for README.md.
 # make sanitize, make tsan: the address, undefined-behaviour and thread sanitizers (mk/sanitizers.mk).
-figures-full docs-figures sanitize tsan: deps
+figures-full docs-figures sanitize tsan commands-cost: deps
 docs-refresh: $(BUILD)/verification/verify_docs
 include mk/pages.mk mk/sanitizers.mk mk/format.mk
 

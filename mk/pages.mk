@@ -42,3 +42,10 @@ docs-figures:
 	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
 	done; \
 	$(BUILD)/verification/verify_docs --fingerprint $$drawn
+
+# make commands-cost: what the README's two commands cost on a fresh clone of the commit (several
+# minutes: the whole of make verify, then make test), tabled as build/runs/commands_cost.md with its
+# provenance record; make docs-refresh copies it into README.md. Run it on a quiet machine.
+commands-cost:
+	@mkdir -p $(RUNS)
+	@tools/commands_cost.sh $(RUNS)/commands_cost.md

@@ -35,11 +35,11 @@ namespace {
 
 // Tolerances and bounds, each with its reason.
 // First-order donor cell and Godunov on a 2-D steady problem with two curved shocks: L1 error
-// O(h); fitted order over N = 16 .. 128 >= 0.8 (measured 0.93).
+// O(h); fitted order over N = 16 .. 128 >= 0.8 (a margin for the curved shocks' grid effects).
 constexpr double kChuteOrder = 0.8;
 // Steady budget: at the steady state of the split scheme (equal steps), the small-particle
-// outflow equals the inflow; after 5 transit times the transient is below round-off (measured
-// 5e-15); 1e-10 relative leaves room and still catches a leak or an unsteady state.
+// outflow equals the inflow; after 5 transit times the transient has decayed to round-off; 1e-10
+// relative leaves room and still catches a leak or an unsteady state.
 constexpr double kBudgetTolerance = 1e-10;
 // Divergence-free mass fluxes from corner values of a stream function: Phi changes by round-off
 // of the differences of corner values only; 16 DBL_EPSILON of Phi.

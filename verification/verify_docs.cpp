@@ -30,28 +30,28 @@
 //     samples and pass declared, spanned and code ones; and the history,
 //     outside-reference and name detectors must flag samples of what they look for (invented
 //     names among them) and pass samples of what exists.
+//   - every generated table records what made it (harness/table_provenance.hpp), and a page
+//     quotes a table made by other physics than the build's only under an earlier-scheme mark
+//     (harness/doc_provenance.hpp).
 // Run: build/verification/verify_docs [--data DIR]   (make verify runs it after every other
 // verification program, whose results and data files some blocks and the figure check read;
-// about 20 s, most of it the tutorial's blocks). Three more modes:
-//   verify_docs --refresh            copy fresh generated tables into docs/generated/ and the
-//                                    pages, then rewrite every value span (make docs-refresh)
-//   verify_docs --fingerprint NAME.. record the fingerprints of reference figures just drawn
-//   verify_docs --numbers            only the value spans and the numbers in prose (a second)
+// its slowest part is the tutorial's blocks). Its other modes: verify_docs --help.
 #include "harness/check_table.hpp"
 #include "harness/doc_blocks.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
 #include "harness/doc_names.hpp"
 #include "harness/doc_prose.hpp"
+#include "harness/doc_provenance.hpp"
 #include "harness/doc_refresh.hpp"
 #include "harness/doc_values.hpp"
 #include "harness/program.hpp"
+#include "harness/table_provenance.hpp"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -69,8 +69,6 @@ namespace {
 constexpr int kBlockTimeout = 300;
 // A command block slower than this is named in the table (make verify's time budget).
 constexpr double kSlowBlock = 2.0;
-// A reference figure is a small image for reading on a fresh clone, not a print master.
-constexpr long kLargestFigureBytes = 200 * 1024;
 
 struct Repository {
     fs::path root, build;
@@ -198,12 +196,14 @@ void check_number_rules(CheckTable& t, const std::vector<DeclaredInput>& inputs,
             ++unused, t.note("  docs/checked_pages.md line " + std::to_string(inputs[i].line) + ": no page uses " +
                              inputs[i].expression);
     t.count("declared inputs that no page uses (of " + std::to_string(inputs.size()) + ")", unused, 0);
-    const std::string typed = "the angle is 23.40 deg\nthe run took 132 s, 93 % of it in 12,503 steps\n";
+    const std::string typed =
+        "the angle is 23.40 deg\nthe run took 132 s, 93 % of it in 12,503 steps\nthe core moves twice as far in 230 of 676 "
+        "cells\n";
     const std::string allowed =
         "Sect. 4.2 and `dt = 0.5` and <!-- value: docs/x.md \"y\" -->0.936<!-- /value -->\n```\n0.25\n```\n";
     std::vector<long> ignored;
-    t.count("number self-check: hand-typed sample numbers flagged (of 4)",
-            static_cast<long>(hand_typed_numbers(typed, "docs/x.md", inputs, ignored).size()), 4);
+    t.count("number self-check: hand-typed sample numbers flagged (of 6)",
+            static_cast<long>(hand_typed_numbers(typed, "docs/x.md", inputs, ignored).size()), 6);
     t.count("number self-check: declared, spanned and code numbers flagged",
             static_cast<long>(hand_typed_numbers(allowed, "docs/x.md", inputs, ignored).size()), 0);
 }
@@ -213,17 +213,6 @@ std::string one_digit_changed(std::string s) {
     const auto at = s.find_first_of("0123456789");
     if (at != std::string::npos) s[at] = s[at] == '9' ? '0' : static_cast<char>(s[at] + 1);
     return s;
-}
-
-/// Changes the first digit of a data file's first data line (comment lines start with #).
-void change_first_data_digit(std::string& data) {
-    std::size_t line = 0;
-    while (line < data.size() && data[line] == '#') {
-        const auto end = data.find('\n', line);
-        line = end == std::string::npos ? data.size() : end + 1;
-    }
-    const auto at = data.find_first_of("0123456789", line);
-    if (at != std::string::npos) data[at] = data[at] == '9' ? '0' : static_cast<char>(data[at] + 1);
 }
 
 /// Generated blocks of one page; records which committed copies are shown.
@@ -236,7 +225,7 @@ void check_generated(CheckTable& t, const Repository& repo, const std::string& p
     for (const Generated& g : blocks) {
         const std::string where = page + ":" + std::to_string(g.first_line) + " " + g.name;
         bool found = false;
-        const std::string copy = read_text(repo.root / "docs" / "generated" / g.name, &found);
+        const std::string copy = shown_part(read_text(repo.root / "docs" / "generated" / g.name, &found));
         t.count(where + ": block equals docs/generated/" + g.name, found && copy == g.text ? 0 : 1, 0);
         if (g.text.find_first_of("0123456789") != std::string::npos) mutants_equal += one_digit_changed(g.text) == copy;
         shown.push_back(g.name);
@@ -249,7 +238,7 @@ void check_generated(CheckTable& t, const Repository& repo, const std::string& p
         }
         t.count(where + ": committed copy equals fresh " + fresh.lexically_relative(repo.build).string() +
                     " (else make docs-refresh)",
-                read_text(fresh) == copy ? 0 : 1, 0);
+                shown_part(read_text(fresh)) == copy ? 0 : 1, 0);
     }
 }
 
@@ -266,49 +255,6 @@ void check_sources(CheckTable& t, const Repository& repo) {
             for (const auto& f : found) t.note(rel + finding_line(f));
         }
     t.count("source files (" + std::to_string(files) + ") referring outside the repository: references", references, 0);
-}
-
-/// Where figure `name` reads its data: the build's bench-data directory for a benchmark's
-/// figure, its runs directory for a scene run by make (make fig7), else `data_dir`.
-fs::path figure_data_dir(const Repository& repo, const std::string& name, const fs::path& data_dir) {
-    if (plots_benchmark(repo.root, name)) return repo.build / "bench-data";
-    return plots_run(repo.root, name) ? repo.build / "runs" : data_dir;
-}
-
-/// Reference figures: recorded, small, and drawn from the data as it is now (a benchmark's or a
-/// make run's figure only where it has run).
-void check_figures(CheckTable& t, const Repository& repo, const fs::path& data_dir, long& mutants_unchanged) {
-    const fs::path dir = repo.root / "docs" / "figures";
-    const auto recorded = read_fingerprints(dir / "fingerprints.txt");
-    long images = 0;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        if (e.path().extension() != ".png") continue;
-        ++images;
-        const std::string name = e.path().stem().string();
-        t.at_most("docs/figures/" + name + ".png: bytes", static_cast<double>(fs::file_size(e.path())), kLargestFigureBytes);
-        t.count("docs/figures/" + name + ".png: recorded in fingerprints.txt", recorded.count(name) ? 1 : 0, 1);
-    }
-    for (const auto& [name, fingerprint] : recorded) {
-        const fs::path from = figure_data_dir(repo, name, data_dir);
-        if ((plots_benchmark(repo.root, name) || plots_run(repo.root, name)) &&
-            !fs::exists(from / figure_reads(repo.root, name).front())) {
-            t.note("  " + name + ": its benchmark or run has not run in this build; the image is not compared with data");
-            t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
-            continue;
-        }
-        std::string error;
-        const std::string now = figure_fingerprint(repo.root, name, from, error);
-        if (!error.empty()) t.note("  " + name + ": " + error);
-        t.count("docs/figures/" + name + ".png: drawn from the current data (else make docs-figures)",
-                !now.empty() && now == fingerprint ? 0 : 1, 0);
-        t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
-        if (now.empty()) continue;
-        std::string data = read_text(from / figure_reads(repo.root, name).front());
-        const std::string before = data_fingerprint(data);
-        change_first_data_digit(data);
-        mutants_unchanged += data_fingerprint(data) == before;
-    }
-    t.at_least("reference figures in docs/figures", images, 1);
 }
 
 /// The detectors flag what they look for and pass what they must not flag.
@@ -354,36 +300,44 @@ Repository find_repository(const char* argv0) {
     return repo;
 }
 
-/// --fingerprint NAME...: records the fingerprints of reference figures just drawn.
-int record_fingerprints(const Repository& repo, const std::vector<std::string>& names, const fs::path& data_dir) {
-    const fs::path file = repo.root / "docs" / "figures" / "fingerprints.txt";
-    auto recorded = read_fingerprints(file);
-    for (const std::string& name : names) {
-        std::string error;
-        recorded[name] = figure_fingerprint(repo.root, name, figure_data_dir(repo, name, data_dir), error);
-        if (!error.empty()) {
-            std::cerr << "docs-figures: " << name << ": " << error << '\n';
-            return 2;
-        }
-    }
-    write_fingerprints(file, recorded);
-    return 0;
-}
-
 }  // namespace
+
+// verify_docs --help.
+constexpr const char* kUsage =
+    "verify_docs: every page checked against the programs (docs/checked_pages.md)\n"
+    "  verify_docs [--data DIR]          the full check (make verify runs it last)\n"
+    "  verify_docs --numbers             only the value spans and the numbers in prose (a second)\n"
+    "  verify_docs --refresh             copy fresh generated tables into docs/generated/ and the pages,\n"
+    "                                    then rewrite every value span (make docs-refresh)\n"
+    "  verify_docs --fingerprint NAME..  record the fingerprints of reference figures just drawn\n"
+    "                                    (make docs-figures)\n"
+    "  verify_docs --tables              only the generated tables' provenance: every quote of a table\n"
+    "                                    made by other physics than this build's is marked (a few seconds)\n"
+    "  verify_docs --physics             print this build's physics fingerprints (a few seconds)\n"
+    "  verify_docs --provenance PROGRAM COMMAND PART..\n"
+    "                                    print the provenance record of a table PROGRAM made by\n"
+    "                                    COMMAND with this build, whose numbers depend on PARTs\n"
+    "                                    (make fig7's tables)\n"
+    "  verify_docs --help                this list\n";
 
 int main(int argc, char** argv) {
     const Repository repo = find_repository(argv[0]);
-    if (argc > 1 && (std::strcmp(argv[1], "--refresh") == 0 || std::strcmp(argv[1], "--fingerprint") == 0)) {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "--help" || mode == "-h") return std::cout << kUsage, 0;
+    if (mode == "--refresh" || mode == "--fingerprint" || mode == "--physics" || mode == "--provenance") {
+        parse_program_options(1, argv);  // only for its handling of errors (exit 2, 3)
         if (repo.root.empty()) return 2;
-        if (std::strcmp(argv[1], "--refresh") == 0) return refresh_pages(repo.root, repo.build, repo.pages);
-        return record_fingerprints(repo, std::vector<std::string>(argv + 2, argv + argc), repo.build / "data");
+        if (mode == "--refresh") return refresh_pages(repo.root, repo.build, repo.pages, physics_fingerprints(repo.root));
+        if (mode == "--fingerprint")
+            return record_fingerprints(repo.root, repo.build, {argv + 2, argv + argc}, repo.build / "data");
+        return physics_mode(repo.root, std::vector<std::string>(argv + 1, argv + argc));
     }
-    const bool numbers_only = argc > 1 && std::strcmp(argv[1], "--numbers") == 0;
-    const ProgramOptions options = parse_program_options(numbers_only ? 1 : argc, argv);
+    const bool numbers_only = mode == "--numbers", tables_only = mode == "--tables";
+    const ProgramOptions options = parse_program_options(numbers_only || tables_only ? 1 : argc, argv);
     CheckTable t("docs: every page checked against the programs (docs/checked_pages.md)");
     t.count("docs/tutorial.md found above the build directory", !repo.root.empty(), 1);
     if (repo.root.empty()) return t.finish();
+    if (tables_only) return check_provenance(t, repo.root, repo.pages, physics_fingerprints(repo.root)), t.finish();
     const std::vector<DeclaredInput> inputs = read_inputs(t, repo);
     NumberCounts numbers;
     numbers.uses.assign(inputs.size(), 0);
@@ -415,8 +369,9 @@ int main(int argc, char** argv) {
         t.count("docs/generated/" + e.path().filename().string() + ": shown by a page",
                 std::count(shown.begin(), shown.end(), e.path().filename().string()) > 0 ? 1 : 0, 1);
     check_sources(t, repo);
-    check_figures(t, repo, fs::path(options.data_dir), figure_mutants_unchanged);
+    check_figures(t, repo.root, repo.build, fs::path(options.data_dir), figure_mutants_unchanged);
     check_detectors(t, tree);
+    check_provenance(t, repo.root, repo.pages, physics_fingerprints(repo.root));
     t.note(std::to_string(repo.pages.size()) + " pages, " + std::to_string(n.commands) + " command blocks, " +
            std::to_string(n.outputs) + " output blocks, " + std::to_string(n.numeric_lines) + " expected lines with " +
            std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks");

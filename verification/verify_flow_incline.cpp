@@ -26,7 +26,7 @@
 // Writes flow_incline_*.dat (explicit mode; the semi-implicit mode adds _semi_implicit) for
 // figures/fig_flow_incline.gp.
 //
-// Run: build/verification/verify_flow_incline [--data DIR]   (about 25 s)
+// Run: build/verification/verify_flow_incline [--data DIR]
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
 #include "harness/incline_flow.hpp"
@@ -154,9 +154,9 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
                    std::log2(u_errors[0] / u_errors[1]), kOrderMin);
     table.at_least(verify::mode_tag(mode) + "critical angle: Phi -> Phi_bvp, order nz = 32 -> 64",
                    std::log2(Phi_errors[0] / Phi_errors[1]), kOrderMin);
-    // 5. Oblique to the grid. A bed that holds moves only by settling and by the creep T_floor allows
-    // (measured 0.38 mm explicit, 0.03 mm semi-implicit); a failing one by its slide (1.9 mm, the
-    // semi-implicit step before its face predictor took the forces before viscosity): half a cell.
+    // 5. Oblique to the grid. A bed that holds moves only by settling and by the creep T_floor allows,
+    // a small share of a cell; a failing one slides by more than a cell (the program prints the
+    // shifts): half a cell tells them apart.
     const double h = 0.05 / 40;
     const double held = slope_shift(m, settings, 19.0, 1.0), steep = slope_shift(m, settings, 26.0, 1.0);
     table.at_most(verify::mode_tag(mode) + "19 deg slope oblique to the grid, 1 s: |move of the centre of mass| / h",

@@ -14,7 +14,7 @@
 // Every check runs in both time-stepping modes (explicit, semi-implicit) with the same tolerance.
 // Writes flow_rotation.dat (history of the drum without gravity; _semi_implicit for that mode).
 //
-// Run: build/verification/verify_flow_rotation [--data DIR]   (about 30 s on one thread)
+// Run: build/verification/verify_flow_rotation [--data DIR]
 #include "closures/closures.hpp"
 #include "drum/bed.hpp"
 #include "flow/flow_solver.hpp"
@@ -55,11 +55,10 @@ constexpr double kNoHeating = 1e-12;
 //    decisions (iteration counts of solves stopped at a tolerance, the donor of a face whose
 //    velocity changes sign, the dust threshold), and in the avalanche of the 1.5 s drum a rounding
 //    difference that flips one moves the semi-implicit run by a finite amount: the perturbed run
-//    differs by a floor of about 1e-9 (Phi), 3e-9 (T / max T), 3e-8 (u / Omega R) whatever the
-//    perturbation from 1e-14 to 1e-11 (measured 2 December 2026: 0.9-2.6e-9, 2.8-6.5e-9,
-//    2.5-4.4e-8; a 1e5 times tighter pressure tolerance leaves the floor, so it is not that
-//    solve's alone). One perturbed run is one sample of the floor, which varied by a factor 2.9
-//    between samples: the slab may differ from the 2-D run by kSampleSpread times the sample.
+//    differs by a floor that does not shrink with the perturbation (from 1e-14 to 1e-11; a much
+//    tighter pressure tolerance leaves it, so it is not that solve's alone; the samples are in
+//    docs/history.md). One perturbed run is one sample of the floor, which varies between
+//    samples: the slab may differ from the 2-D run by kSampleSpread times the sample.
 constexpr double kSlabTol = 1e-10;
 constexpr double kSlabPressure = 1e-6;
 constexpr double kSlabTolCoupled = 1e-8;

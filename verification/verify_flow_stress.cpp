@@ -19,9 +19,9 @@
 //      1e-4 down to just above Phi_vacuum in a haze of empty cells (just below it). The dust must not set dt (its
 //      outflow is capped, assumption F11): every step after the first ones is dt_max. Before the
 //      cap, a cell just above Phi_vacuum between empty ones had only closed faces and kept
-//      accelerating under gravity, and the drum at 100 cells took 5e-5 s steps with its bed at rest.
+//      accelerating under gravity and set ever smaller steps in a drum whose bed was at rest.
 //
-// Run: build/verification/verify_flow_stress [--data DIR]   (about 10 s)
+// Run: build/verification/verify_flow_stress [--data DIR]
 #include "closures/closures.hpp"
 #include "core/error.hpp"
 #include "drum/bed.hpp"

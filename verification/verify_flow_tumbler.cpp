@@ -15,7 +15,7 @@
 // Both modes run the same drum with the same checks (the semi-implicit one at its own dt, 1 ms).
 // Writes DIR/flow_tumbler/{fields_lab,fields_drum,history,summary}.dat for figures/fig_flow_tumbler.gp.
 //
-// Run: build/verification/verify_flow_tumbler [--data DIR]   (about 1 min: 20 s explicit, 35 s semi-implicit)
+// Run: build/verification/verify_flow_tumbler [--data DIR]
 #include "closures/material.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"

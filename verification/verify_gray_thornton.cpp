@@ -40,16 +40,16 @@ namespace {
 // roundings apart: 8 DBL_EPSILON of the largest flux value |a| Phi/4.
 constexpr double kFluxTolerance = 8 * DBL_EPSILON;
 // First-order monotone schemes resolve a shock of a convex flux in O(1) cells: L1 error = O(h).
-// Fitted order over N = 100 .. 1600 must be >= 0.85 (measured 0.97 .. 1.01).
+// Fitted order over N = 100 .. 1600 must be >= 0.85 (a margin for the fit's finite range of N).
 constexpr double kShockOrder = 0.85;
 // Shock width: L1 error / (h * sum of the jumps) is the number of cells the shocks are smeared
-// over; <= 1 cell (measured 0.3 .. 0.4 for both orders).
+// over; a monotone scheme keeps it within a cell.
 constexpr double kShockCells = 1.0;
-// Fan plus shocks, first order: the centred fan costs a log factor, O(h log h): fitted >= 0.75
-// (measured 0.84).
+// Fan plus shocks, first order: the centred fan costs a log factor, O(h log h): fitted >= 0.75,
+// below 1 by what the log factor takes over N = 100 .. 1600.
 constexpr double kFanOrderFirst = 0.75;
 // Second order with the MC limiter: the fan converges at order ~2, the shocks at 1, the corners
-// of the fan clip: fitted >= 1.0 over N = 200 .. 3200 (measured 1.2).
+// of the fan clip: fitted >= 1.0 over N = 200 .. 3200 (the shocks' order bounds it from below).
 constexpr double kFanOrderSecond = 1.0;
 // The upwind flux leaves the expansion shock standing: its L1 error stays near the area of the
 // missing fan, 0.3; >= 0.1 at every N says it does not converge.

@@ -33,13 +33,13 @@ using namespace granseg::verify;
 namespace {
 
 // Tolerances and bounds, each with its reason.
-// Smooth solution: a first-order monotone scheme converges at order 1 (fitted >= 0.9, measured
-// 0.95 for the Godunov fluxes, 0.93 for Rusanov), the limited second-order one at order 2 except
-// at the two extrema, where the limiter clips (fitted >= 1.8, measured 1.96).
+// Smooth solution: a first-order monotone scheme converges at order 1 (fitted >= 0.9), the
+// limited second-order one at order 2 except at the two extrema, where the limiter clips (fitted
+// >= 1.8); the margins leave room for the fit over a finite range of N (the program prints it).
 constexpr double kSmoothOrderFirst = 0.9;
 constexpr double kSmoothOrderSecond = 1.8;
-// Remixing: Godunov flux plus central diffusion is first order (fitted >= 0.9, measured 0.98);
-// with the reconstruction second order (fitted >= 1.8, measured 2.0).
+// Remixing: Godunov flux plus central diffusion is first order (fitted >= 0.9); with the
+// reconstruction second order (fitted >= 1.8).
 constexpr double kRemixOrderFirst = 0.9;
 constexpr double kRemixOrderSecond = 1.8;
 constexpr double kMassTolerance = 1e-13;  // as in verify_overshoot

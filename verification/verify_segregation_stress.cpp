@@ -45,8 +45,8 @@ constexpr double kBoundTolerance = kBoundRoundOff;
 // the other verification programs stay below 1e-13 relative; long runs here add up more rounding.
 constexpr double kUpdateRoundOff = 2 * DBL_EPSILON;
 
-// Most columns start away from a steady state, so phi must change in most runs (measured 96 %;
-// the rest start all empty, or with full cells below empty ones, or behind T = 0): a solver
+// Most columns start away from a steady state, so phi must change in most runs (the
+// program prints the share; the rest start all empty, or with full cells below empty ones, or behind T = 0): a solver
 // that does nothing would pass every other check here, and changes nothing in any run.
 constexpr double kMovedShare = 0.9;
 

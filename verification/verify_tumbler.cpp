@@ -31,6 +31,7 @@
 #include "flow/flow_tables.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
+#include "harness/tolerances.hpp"
 #include "run/scene_file.hpp"
 #include "scenes/tumbler.hpp"
 #include "segregation/invariants.hpp"
@@ -49,8 +50,9 @@ using granseg::verify::CheckTable;
 namespace {
 
 // Stated bounds and tolerances, each with its reason.
-// a. Amounts: ~1e5 steps, each rounding every cell's update once (~1e-16 relative), random signs:
-//    the drift stays orders of magnitude below 1e-12.
+// a. Amounts: every step rounds each cell's update once (~1e-16 relative, random signs), so over
+//    the run's steps (the listing's first line counts them) the drift stays orders of magnitude
+//    below 1e-12.
 constexpr double kMassTol = 1e-12;
 // b. A uniform phi_hat = 1/2 is carried exactly (bulk_transport.hpp: the bulk step is the mass
 //    balance scaled by 1/2), so the flow sees exactly the packing of tumbler-flow: 1e-12 leaves
@@ -60,9 +62,10 @@ constexpr double kSameFlowTol = 1e-12;
 // c. Direction. In a parallel shear flow d_s is exactly perpendicular to u (Sect. 2.3). In the
 //    layer the streamlines converge and diverge along the surface: an extension rate eps next to
 //    the shear rate gamma tilts the maximum-shear planes by (1/2) atan(2 eps/gamma) ~ eps/gamma ~
-//    (layer thickness)/(surface length) ~ 1.5 cm / 9 cm, 10 degrees (docs/sect4.2_tumbler.md,
-//    "What verify_tumbler checks"); most flowing cells lie in the middle of the surface where eps is smaller, so the
-//    median deviation from 90 degrees is at most that.
+//    (layer thickness)/(surface length): the run's own layer (history.dat, layer_thickness) over
+//    the chord of the 75 %-full drum, 8.7 cm, some 10 degrees (docs/sect4.2_tumbler.md, "What
+//    verify_tumbler checks"); most flowing cells lie in the middle of the surface where eps is
+//    smaller, so the median deviation from 90 degrees is at most that.
 constexpr double kMedianDeviation = 10.0;  // degrees
 // Frame: the lab gradient R (G + W) R^T differs from the drum one G by the rotation's spin W
 // (antisymmetric: the strain rate, its eigenvectors and so d_s turn with R and nothing else).
@@ -73,9 +76,9 @@ constexpr double kFrameRoundings = 16.0;
 // e. Fig. 7d. Off: |contrast| <= the pooled spread of Phi within a kind and a bin (the noise of a
 //    bin mean is smaller; the spread also covers the pressure differences at equal depth between
 //    the bands, the one thing besides the packing law that differs between them). On: the
-//    contrast is at least twice that spread, and agrees with the packing law's prediction at
-//    the bins' mean pressure to within the spread.
-constexpr double kContrastSpreads = 2.0;
+//    contrast is at least kContrastSpreads (harness/tolerances.hpp) times that spread, and agrees
+//    with the packing law's prediction at the bins' mean pressure to within the spread.
+using verify::kContrastSpreads;
 
 // d (coarse). Small particles sink through the flowing layer and leave it at its bottom, into the
 //    streamlines of the ring; large ones ride on top and are laid down at the wall (Sect. 4.2,

@@ -18,7 +18,7 @@
 // Then the same scene with the other bulk scheme (FCT <-> donor cell), the same checks except the
 // direction. Writes the scene's outputs (tumbler_*.dat) for figures/fig7{a,b,c}_*.gp.
 //
-// Run: build/verification/verify_tumbler_kinematic [--data DIR]   (about 7 s; reads
+// Run: build/verification/verify_tumbler_kinematic [--data DIR]   (reads
 // figures/tumbler_kinematic.toml relative to the source tree the binary was built in)
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"

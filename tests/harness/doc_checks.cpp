@@ -177,6 +177,24 @@ BOOST_AUTO_TEST_CASE(a_span_shows_its_value_to_its_own_precision) {
     BOOST_TEST(rendered_like(-0.0001, "0.00") == "0.00");
 }
 
+// A number in words stands for the values that round to it, and is rewritten in the same words.
+BOOST_AUTO_TEST_CASE(a_span_in_words_shows_what_rounds_to_it) {
+    const auto twice = shown_number("twice");
+    BOOST_TEST_REQUIRE(twice.has_value());
+    BOOST_TEST(shows(*twice, 2.4));
+    BOOST_TEST(!shows(*twice, 2.6));                                     // "three times"
+    BOOST_TEST(!shows({twice->value + twice->unit, twice->unit}, 2.1));  // the self-check's mutant
+    BOOST_TEST(shows(*shown_number("a third"), 230.0 / 676.0));
+    BOOST_TEST(!shows(*shown_number("a quarter"), 230.0 / 676.0));
+    BOOST_TEST(shows(*shown_number("twenty times"), 22.6));
+    BOOST_TEST(shows(*shown_number("two hundredths"), 0.018));
+    BOOST_TEST(!shown_number("thrice as often").has_value());
+    BOOST_TEST(rendered_like(2.7, "twice") == "three times");
+    BOOST_TEST(rendered_like(22.6, "eight times") == "twenty times");
+    BOOST_TEST(rendered_like(0.26, "a third") == "a quarter");
+    BOOST_TEST(rendered_like(0.011, "two hundredths") == "one hundredth");
+}
+
 BOOST_AUTO_TEST_CASE(refresh_rewrites_spans_at_their_precision) {
     const std::string page =
         "index <!-- value: docs/t.md \"i\" -->0.92<!-- /value -->, steps <!-- value: docs/t.md \"s\" -->12,000<!-- /value -->\n";

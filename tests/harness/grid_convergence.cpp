@@ -139,6 +139,20 @@ BOOST_AUTO_TEST_CASE(two_grids_with_the_exact_order) {
     BOOST_TEST(g.fs == 3.0);
 }
 
+// The uncertainty of a coarser member is the same rule at its own h: with two grids and the exact
+// order, 3 |f2 - f0| (the coarser run carries the larger error); a range is the same for all.
+BOOST_AUTO_TEST_CASE(the_uncertainty_of_each_member_at_its_own_h) {
+    const std::vector<double> h{1.0 / 70, 1.0 / 50};
+    const std::vector<double> f = power_law(0.9, -5, 1, h);
+    const GridConvergence g = grid_convergence(h, f, {0, 0}, 1.0);
+    BOOST_TEST(uncertainty_at(g, h, f, 0) == g.uncertainty);
+    BOOST_TEST(uncertainty_at(g, h, f, 1) == 3 * 5 * h[1], boost::test_tools::tolerance(1e-12));
+    const std::vector<double> wavy{1.0, 1.2, 0.9, 1.1};
+    const std::vector<double> h4{1, 1.4, 2, 2.8};
+    const GridConvergence o = grid_convergence(h4, wavy, {0.01, 0.01, 0.01, 0.01}, 1.0);
+    BOOST_TEST(uncertainty_at(o, h4, wavy, 3) == o.uncertainty);
+}
+
 // A share whose fit extrapolates below 0 is flagged; the same fit for an unbounded quantity is not.
 BOOST_AUTO_TEST_CASE(extrapolation_outside_the_physical_range_is_flagged) {
     const std::vector<double> h{1, 1.4, 2, 2.8};

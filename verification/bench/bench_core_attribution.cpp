@@ -31,6 +31,7 @@
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
 #include "harness/side_by_side.hpp"
+#include "harness/table_provenance.hpp"
 #include "run/output.hpp"
 #include "study/fig7_report.hpp"
 #include "study/fig7_study.hpp"
@@ -237,7 +238,7 @@ void write_results(const std::vector<PlannedRun>& runs, const std::vector<Fig7Re
     md << "\nThe core's (r < d − layer) small-particle share at t_end = " << fig7_number(o.run.t_end)
        << " s ± its jitter over the last " << fig7_number(o.run.jitter_window)
        << " s; muscl transport, packing feedback on. Written by bench_core_attribution.\n";
-    write_file_atomically(o.run.data_dir + "/core_attribution.md", md.str());
+    write_generated_table(o.run.data_dir + "/core_attribution.md", md.str(), kDrumStudyParts);
 
     DataTable profile;
     profile.comment(

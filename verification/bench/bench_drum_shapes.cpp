@@ -11,6 +11,7 @@
 //
 // Run: build/bench/bench_drum_shapes [--data DIR]
 #include "harness/program.hpp"
+#include "harness/table_provenance.hpp"
 #include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
 
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
                     r.at("cpu_seconds"), r.at("threads"), r.at("steps"), r.at("inside_cells"));
         std::fflush(stdout);
     }
-    write_file_atomically(options.data_dir + "/drum_shapes.md", md);
+    verify::write_generated_table(options.data_dir + "/drum_shapes.md", md, verify::kDrumParts);
     std::printf("%s\nload average before: %s, after: %s\n", md.c_str(), load_before.c_str(), verify::load_average().c_str());
     return 0;
 }

@@ -19,6 +19,7 @@
 #include "harness/gray_thornton.hpp"
 #include "harness/program.hpp"
 #include "harness/segregation_run.hpp"
+#include "harness/table_provenance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -195,7 +196,7 @@ int main(int argc, char** argv) {
     }
     table.comment("load average after: " + load_average());
     write_data(options, "bench_segregation.dat", table);
-    write_file_atomically(options.data_dir + "/bench_segregation.md", markdown_table(markdown));
+    write_generated_table(options.data_dir + "/bench_segregation.md", markdown_table(markdown), {"segregation"});
     std::printf("\nload average before: %s, after: %s\n", load_before.c_str(), load_average().c_str());
     for (const auto& line : summary) std::printf("%s\n", line.c_str());
     return 0;

@@ -21,6 +21,7 @@
 #include "flow/flow_solver.hpp"
 #include "harness/check_table.hpp"
 #include "harness/program.hpp"
+#include "harness/tolerances.hpp"
 #include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
 
@@ -40,6 +41,7 @@
 
 using namespace granseg;
 using granseg::verify::CheckTable;
+using granseg::verify::kContrastSpreads;
 
 namespace {
 
@@ -61,9 +63,8 @@ constexpr double kRatio = 1.2;
 constexpr double kRingAtLeast = 0.55;
 constexpr double kPeripheryAtMost = 0.45;
 constexpr double kIndexAtLeast = 0.2;
-// e. As verify_tumbler: on, the contrast exceeds twice the spread of Phi within a kind and a bin;
-// off, it stays within that spread.
-constexpr double kContrastSpreads = 2.0;
+// e. As verify_tumbler: on, the contrast exceeds kContrastSpreads (harness/tolerances.hpp) times
+// the spread of Phi within a kind and a bin; off, it stays within that spread.
 
 double run_timed(const std::string& scene, const std::string& dir) {
     const auto t0 = std::chrono::steady_clock::now();

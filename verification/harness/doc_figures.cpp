@@ -1,13 +1,11 @@
 #include "harness/doc_figures.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/number_fingerprint.hpp"
 #include "harness/text_pattern.hpp"
 #include "run/output.hpp"
 
-#include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -17,48 +15,8 @@ namespace granseg::verify::docs {
 namespace {
 
 // A figure of 800 pixels cannot show a relative change below 1e-4: numbers are compared to 4
-// significant digits, and values below 1e-9 of their column's largest magnitude count as 0
-// (round-off at that level may differ between machines and compilers).
+// significant digits (harness/number_fingerprint.hpp).
 constexpr int kDigits = 4;
-constexpr double kColumnFloor = 1e-9;
-
-class Fnv1a {
-public:
-    void add(const std::string& s) {
-        for (unsigned char c : s) hash_ = (hash_ ^ c) * 0x100000001b3ULL;
-        hash_ = (hash_ ^ 0xff) * 0x100000001b3ULL;  // separator: "ab" "c" differs from "a" "bc"
-    }
-    std::string hex() const {
-        char buf[17];
-        std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash_));
-        return buf;
-    }
-
-private:
-    std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
-
-bool parse_number(const std::string& token, double& x) {
-    char* end = nullptr;
-    x = std::strtod(token.c_str(), &end);
-    return end != token.c_str() && *end == '\0';
-}
-
-/// The data lines of a file as tokens (comment lines dropped; a blank line is kept as a block
-/// separator, which gnuplot reads).
-std::vector<std::vector<std::string>> data_rows(const std::string& text) {
-    std::vector<std::vector<std::string>> rows;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first != std::string::npos && line[first] == '#') continue;
-        std::istringstream words(line);
-        std::vector<std::string> row;
-        for (std::string w; words >> w;) row.push_back(w);
-        rows.push_back(row);
-    }
-    return rows;
-}
 
 /// The files a script loads (`load 'figures/x.gnuplot'`), relative to the repository's top.
 std::vector<std::string> loaded_scripts(const std::string& script) {
@@ -112,33 +70,7 @@ bool plots_run(const fs::path& root, const std::string& name) {
     return needs_matching(root, name, needs);
 }
 
-std::string data_fingerprint(const std::string& text) {
-    const auto rows = data_rows(text);
-    std::vector<double> largest;
-    for (const auto& row : rows)
-        for (std::size_t j = 0; j < row.size(); ++j) {
-            double x;
-            if (j >= largest.size()) largest.resize(j + 1, 0.0);
-            if (parse_number(row[j], x) && std::isfinite(x)) largest[j] = std::max(largest[j], std::fabs(x));
-        }
-    Fnv1a h;
-    for (const auto& row : rows) {
-        std::string line;
-        for (std::size_t j = 0; j < row.size(); ++j) {
-            double x;
-            if (!parse_number(row[j], x) || !std::isfinite(x)) {
-                line += row[j] + " ";
-                continue;
-            }
-            if (std::fabs(x) < kColumnFloor * largest[j]) x = 0.0;
-            char buf[40];
-            std::snprintf(buf, sizeof buf, "%.*g ", kDigits, x == 0.0 ? 0.0 : x);  // -0 prints as 0
-            line += buf;
-        }
-        h.add(line);
-    }
-    return h.hex();
-}
+std::string data_fingerprint(const std::string& text) { return numbers_fingerprint(text, kDigits); }
 
 std::string figure_fingerprint(const fs::path& root, const std::string& name, const fs::path& data_dir, std::string& error) {
     bool found = false;
@@ -186,6 +118,84 @@ void write_fingerprints(const fs::path& file, const std::map<std::string, std::s
     std::string text;
     for (const auto& [name, fingerprint] : fingerprints) text += name + " " + fingerprint + "\n";
     write_file_atomically(file.string(), text);
+}
+
+namespace {
+
+// A reference figure is a small image for reading on a fresh clone, not a print master.
+constexpr long kLargestFigureBytes = 200 * 1024;
+
+/// Changes the first digit of a data file's first data line (comment lines start with #).
+void change_first_data_digit(std::string& data) {
+    std::size_t line = 0;
+    while (line < data.size() && data[line] == '#') {
+        const auto end = data.find('\n', line);
+        line = end == std::string::npos ? data.size() : end + 1;
+    }
+    const auto at = data.find_first_of("0123456789", line);
+    if (at != std::string::npos) data[at] = data[at] == '9' ? '0' : static_cast<char>(data[at] + 1);
+}
+
+/// Where figure `name` reads its data: the build's bench-data directory for a benchmark's
+/// figure, its runs directory for a scene run by make (make fig7), else `data_dir`.
+fs::path figure_data_dir(const fs::path& root, const fs::path& build, const std::string& name, const fs::path& data_dir) {
+    if (plots_benchmark(root, name)) return build / "bench-data";
+    return plots_run(root, name) ? build / "runs" : data_dir;
+}
+
+}  // namespace
+
+/// Reference figures: recorded, small, and drawn from the data as it is now (a benchmark's or a
+/// make run's figure only where it has run).
+void check_figures(CheckTable& t, const fs::path& root, const fs::path& build, const fs::path& data_dir,
+                   long& mutants_unchanged) {
+    const fs::path dir = root / "docs" / "figures";
+    const auto recorded = read_fingerprints(dir / "fingerprints.txt");
+    long images = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        if (e.path().extension() != ".png") continue;
+        ++images;
+        const std::string name = e.path().stem().string();
+        t.at_most("docs/figures/" + name + ".png: bytes", static_cast<double>(fs::file_size(e.path())), kLargestFigureBytes);
+        t.count("docs/figures/" + name + ".png: recorded in fingerprints.txt", recorded.count(name) ? 1 : 0, 1);
+    }
+    for (const auto& [name, fingerprint] : recorded) {
+        const fs::path from = figure_data_dir(root, build, name, data_dir);
+        if ((plots_benchmark(root, name) || plots_run(root, name)) && !fs::exists(from / figure_reads(root, name).front())) {
+            t.note("  " + name + ": its benchmark or run has not run in this build; the image is not compared with data");
+            t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
+            continue;
+        }
+        std::string error;
+        const std::string now = figure_fingerprint(root, name, from, error);
+        if (!error.empty()) t.note("  " + name + ": " + error);
+        t.count("docs/figures/" + name + ".png: drawn from the current data (else make docs-figures)",
+                !now.empty() && now == fingerprint ? 0 : 1, 0);
+        t.count("docs/figures/" + name + ".png exists", fs::exists(dir / (name + ".png")) ? 1 : 0, 1);
+        if (now.empty()) continue;
+        std::string data = read_text(from / figure_reads(root, name).front());
+        const std::string before = data_fingerprint(data);
+        change_first_data_digit(data);
+        mutants_unchanged += data_fingerprint(data) == before;
+    }
+    t.at_least("reference figures in docs/figures", images, 1);
+}
+
+/// --fingerprint NAME...: records the fingerprints of reference figures just drawn.
+int record_fingerprints(const fs::path& root, const fs::path& build, const std::vector<std::string>& names,
+                        const fs::path& data_dir) {
+    const fs::path file = root / "docs" / "figures" / "fingerprints.txt";
+    auto recorded = read_fingerprints(file);
+    for (const std::string& name : names) {
+        std::string error;
+        recorded[name] = figure_fingerprint(root, name, figure_data_dir(root, build, name, data_dir), error);
+        if (!error.empty()) {
+            std::cerr << "docs-figures: " << name << ": " << error << '\n';
+            return 2;
+        }
+    }
+    write_fingerprints(file, recorded);
+    return 0;
 }
 
 }  // namespace granseg::verify::docs

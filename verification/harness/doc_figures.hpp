@@ -11,6 +11,8 @@
 // (or timings in comment lines) does not make an image stale.
 #pragma once
 
+#include "harness/check_table.hpp"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -42,5 +44,17 @@ std::map<std::string, std::string> read_fingerprints(const std::filesystem::path
 
 /// Writes `fingerprints` as docs/figures/fingerprints.txt (one line "NAME FINGERPRINT" each).
 void write_fingerprints(const std::filesystem::path& file, const std::map<std::string, std::string>& fingerprints);
+
+/// The reference figures' checks (verify_docs): every docs/figures/NAME.png is small, recorded,
+/// and drawn from the data it would be drawn from now, read from `data_dir` (a verification
+/// program's), `build`/bench-data (a benchmark's, only where it has run) or `build`/runs (make
+/// fig7's); `mutants_unchanged` counts recorded figures whose fingerprint misses a changed digit.
+void check_figures(CheckTable& t, const std::filesystem::path& root, const std::filesystem::path& build,
+                   const std::filesystem::path& data_dir, long& mutants_unchanged);
+
+/// `make docs-figures` (verify_docs --fingerprint NAME...): records the fingerprints of figures
+/// just drawn; 2 with a message on stderr if one cannot be computed.
+int record_fingerprints(const std::filesystem::path& root, const std::filesystem::path& build,
+                        const std::vector<std::string>& names, const std::filesystem::path& data_dir);
 
 }  // namespace granseg::verify::docs

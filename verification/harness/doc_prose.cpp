@@ -50,6 +50,18 @@ const Pattern& count_pattern() {
     return p;
 }
 
+// A ratio, share or count of a result in words ("twice", "a third", "two hundredths") or as
+// "N of M": a result typed by hand unless spanned (doc_words.hpp) or declared. "Half" is left out:
+// pages use it for inputs (half the step) far more often than for results.
+const Pattern& word_pattern() {
+    static const Pattern p(
+        R"((^|[^\w])((?:twice|thrice|(?:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|)"
+        R"(forty|fifty|a hundred) times|a third|two thirds|a quarter|three quarters|a fifth|(?:two|three|four) fifths|a tenth|)"
+        R"((?:one|two|three|four|five|six|seven|eight|nine) hundredths?|\d+(?:,\d{3})* of \d+(?:,\d{3})*))(?![\w]))",
+        true);
+    return p;
+}
+
 }  // namespace
 
 std::vector<DeclaredInput> declared_inputs(const std::string& declaring_page, std::string& error) {
@@ -88,19 +100,30 @@ std::vector<DeclaredInput> declared_inputs(const std::string& declaring_page, st
     return inputs;
 }
 
+std::vector<bool> indented_code_lines(const std::string& page) {
+    const std::vector<std::string> lines = lines_of(page);
+    std::vector<bool> code(lines.size(), false);
+    bool fenced = false;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& line = lines[i];
+        if (line.rfind("```", 0) == 0) fenced = !fenced;
+        const bool code_indent = line.rfind("    ", 0) == 0 || line.rfind("\t", 0) == 0;
+        code[i] = !fenced && code_indent && (i == 0 || code[i - 1] || blank(lines[i - 1])) && !blank(line);
+    }
+    return code;
+}
+
 std::string prose_of(const std::string& page) {
     std::vector<std::string> lines = lines_of(page);
-    bool fenced = false, generated = false, indented = false;
+    const std::vector<bool> indented = indented_code_lines(page);
+    bool fenced = false, generated = false;
     for (std::size_t i = 0; i < lines.size(); ++i) {
         std::string& line = lines[i];
         const bool fence = line.rfind("```", 0) == 0;
         const bool generated_marker = line.rfind("<!-- generated: ", 0) == 0 || line == "<!-- end generated -->";
         if (fence) fenced = !fenced;
         if (generated_marker) generated = line != "<!-- end generated -->";
-        // Indented code: four blanks or a tab after a blank line or after indented code.
-        const bool code_indent = line.rfind("    ", 0) == 0 || line.rfind("\t", 0) == 0;
-        indented = !fenced && code_indent && (indented || i == 0 || blank(lines[i - 1])) && !blank(line);
-        if (fence || fenced || generated || generated_marker || indented)
+        if (fence || fenced || generated || generated_marker || indented[i])
             blank_range(line, 0, line.size());
         else
             blank_inline(line);
@@ -130,7 +153,7 @@ std::vector<Finding> hand_typed_numbers(const std::string& page_text, const std:
                 if (from >= line.size()) break;
             }
         }
-        for (const Pattern* p : {&decimal_pattern(), &count_pattern()}) {
+        for (const Pattern* p : {&decimal_pattern(), &count_pattern(), &word_pattern()}) {
             std::size_t from = 0;
             while (const auto m = p->first_in(line.substr(from))) {
                 const std::size_t at = from + m->prefix.size() + (*m)[1].size(), length = (*m)[2].size();

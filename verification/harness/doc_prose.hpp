@@ -4,7 +4,11 @@
 // backticks), HTML comments and link targets are blanked out is its prose, and in it
 //   - every decimal number (0.936, 1.7, 1e-12), and
 //   - every integer counting what a run produces or costs: before %, s, seconds, minutes, hours,
-//     CPU-s, CPU-hours, steps, sub-steps, iterations, cycles, V-cycles
+//     CPU-s, CPU-hours, steps, sub-steps, iterations, cycles, V-cycles, and
+//   - every ratio, share or count in words or as a count of a total: twice, N times, a third,
+//     two thirds, a quarter, three quarters, a fifth, two to four fifths, a tenth, N hundredths,
+//     "230 of 676"
+//     (a span may show it in words, doc_words.hpp)
 // is a result typed by hand, unless a declared input covers it. The inputs are declared once, in
 // the ```inputs block of docs/checked_pages.md: one line per input, a regular expression
 // (ECMAScript) and, after "  # ", why its numbers are inputs (scene keys, the paper's parameters,
@@ -30,6 +34,10 @@ struct DeclaredInput {
 /// The declarations of the first ```inputs block of `declaring_page`; `error` names a line that
 /// is not "[@PAGE ]REGEX  # why" or whose expression does not compile.
 std::vector<DeclaredInput> declared_inputs(const std::string& declaring_page, std::string& error);
+
+/// Per line of a page: whether it is indented code (four blanks or a tab after a blank line or
+/// after indented code, outside fenced blocks).
+std::vector<bool> indented_code_lines(const std::string& page);
 
 /// The page's prose: the text with fenced and indented code, generated blocks, value spans, HTML
 /// comments, code spans in backticks and link targets replaced by blanks (lines and columns kept).

@@ -1,7 +1,9 @@
 #include "harness/doc_refresh.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_provenance.hpp"
 #include "harness/doc_values.hpp"
+#include "harness/table_provenance.hpp"
 
 #include <iostream>
 
@@ -19,7 +21,7 @@ fs::path fresh_table(const fs::path& build, const std::string& name) {
 
 bool compared(const std::string& name) { return name.size() < 8 || name.compare(name.size() - 8, 8, "_cost.md") != 0; }
 
-int refresh_pages(const fs::path& root, const fs::path& build, const std::vector<std::string>& pages) {
+int refresh_pages(const fs::path& root, const fs::path& build, const std::vector<std::string>& pages, const Fingerprints& now) {
     for (const auto& e : fs::directory_iterator(root / "docs" / "generated")) {
         const std::string name = e.path().filename().string();
         const fs::path fresh = fresh_table(build, name);
@@ -27,10 +29,10 @@ int refresh_pages(const fs::path& root, const fs::path& build, const std::vector
         const std::string text = read_text(fresh);
         write_file_atomically(e.path().string(), text);
         for (const std::string& page : pages) {
-            const std::string before = read_text(root / page), after = with_generated(before, name, text);
+            const std::string before = read_text(root / page), after = with_generated(before, name, shown_part(text));
             if (after != before) write_file_atomically((root / page).string(), after);
         }
-        std::cout << "docs-refresh: " << name << " from " << fresh.string() << '\n';
+        std::cout << "docs-refresh: " << name << " from " << fresh.string() << " (" << physics_verdict(text, now) << ")\n";
     }
     // Spans last: those that read a generated table then see its fresh copy.
     for (const std::string& page : pages) {

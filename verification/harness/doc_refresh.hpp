@@ -3,6 +3,8 @@
 // show it, then every value span whose source can be read is rewritten from it.
 #pragma once
 
+#include "harness/physics_fingerprint.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,7 +20,10 @@ std::filesystem::path fresh_table(const std::filesystem::path& build, const std:
 bool compared(const std::string& name);
 
 /// Refreshes the generated tables, then the value spans, of `pages` (paths from `root`); prints
-/// what it changed and returns 0.
-int refresh_pages(const std::filesystem::path& root, const std::filesystem::path& build, const std::vector<std::string>& pages);
+/// what it changed, and for each table copied whether this build's physics (`now`) made it, and
+/// returns 0. A table keeps the provenance record its program wrote: copying a table made by
+/// other physics leaves it stale (doc_provenance.hpp).
+int refresh_pages(const std::filesystem::path& root, const std::filesystem::path& build, const std::vector<std::string>& pages,
+                  const Fingerprints& now);
 
 }  // namespace granseg::verify::docs

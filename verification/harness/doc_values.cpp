@@ -1,6 +1,7 @@
 #include "harness/doc_values.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_words.hpp"
 #include "harness/text_pattern.hpp"
 
 #include <algorithm>
@@ -205,7 +206,11 @@ std::optional<ShownNumber> shown_number(const std::string& text) {
     std::string s = text;
     if (grouped.matches(s)) s.erase(std::remove(s.begin(), s.end(), ','), s.end());
     const auto m = plain.match_of(s);
-    if (!m) return std::nullopt;
+    if (!m) {
+        const auto words = word_number(text);  // "twice", "a third" (doc_words.hpp)
+        if (words) return ShownNumber{words->value, words->unit};
+        return std::nullopt;
+    }
     const int decimals = static_cast<int>((*m)[3].size()), exponent = m->took_part[5] ? std::stoi((*m)[5]) : 0;
     return ShownNumber{std::stod(s), std::pow(10.0, exponent - decimals)};
 }
@@ -213,6 +218,7 @@ std::optional<ShownNumber> shown_number(const std::string& text) {
 bool shows(const ShownNumber& shown, double value) { return within_last_digit(value, shown.value, shown.unit); }
 
 std::string rendered_like(double value, const std::string& like) {
+    if (const auto words = in_words_like(value, like)) return *words;
     const auto dot = like.find('.'), e = like.find_first_of("eE");
     const int decimals = dot == std::string::npos ? 0 : static_cast<int>((e == std::string::npos ? like.size() : e) - dot - 1);
     char buffer[64];
@@ -292,19 +298,25 @@ std::optional<double> resolved(const std::string& source_text, const std::string
 std::vector<ResolvedSpan> resolved_spans(const std::string& page, const fs::path& root, const fs::path& build,
                                          std::string& error) {
     std::vector<ResolvedSpan> out;
-    for (const ValueSpan& span : value_spans(page, error)) {
+    static const Pattern power(R"(^(.*\S)\s+\^\s*([0-9.]+)\s*$)");
+    for (ValueSpan span : value_spans(page, error)) {
         ResolvedSpan r{span, std::nullopt, ""};
-        // SOURCE - SOURCE, SOURCE + SOURCE: the difference or the sum of two values.
+        // SOURCE ^ K: the value to the power K (a ratio of temperatures as one of speeds: ^ 0.5).
+        double exponent = 1.0;
+        if (const auto m = power.match_of(span.source)) span.source = (*m)[1], exponent = std::stod((*m)[2]);
+        // SOURCE - SOURCE, SOURCE + SOURCE, SOURCE / SOURCE: the difference, sum or ratio of two values.
         std::size_t op = std::string::npos;
-        for (const char* sign : {" - ", " + "})
+        for (const char* sign : {" - ", " + ", " / "})
             for (const char* next : {"docs/", "build/", "output "}) op = std::min(op, span.source.find(sign + std::string(next)));
         if (op == std::string::npos) {
             r.value = resolved(span.source, page, span.line, root, build, r.error);
         } else {
             const auto a = resolved(span.source.substr(0, op), page, span.line, root, build, r.error);
             const auto b = a ? resolved(span.source.substr(op + 3), page, span.line, root, build, r.error) : std::nullopt;
-            if (a && b) r.value = span.source[op + 1] == '-' ? *a - *b : *a + *b;
+            const char sign = span.source[op + 1];
+            if (a && b) r.value = sign == '-' ? *a - *b : sign == '+' ? *a + *b : *a / *b;
         }
+        if (r.value && exponent != 1.0) r.value = std::pow(*r.value, exponent);
         out.push_back(r);
     }
     return out;

@@ -20,8 +20,10 @@
 //                                       of numbers): column COLUMN of data row ROW, which is
 //                                       "last", a number from 1, or KEY=VALUE (the first row
 //                                       whose column KEY holds VALUE)
-// and SOURCE - SOURCE or SOURCE + SOURCE, the difference or the sum of two values (a change, a
-// distance to a limit, the end of a band). FILE may
+// and SOURCE - SOURCE, SOURCE + SOURCE or SOURCE / SOURCE, the difference, sum or ratio of two
+// values (a change, a distance to a limit, the end of a band, "twice"), any of them followed by
+// ^ K, the value to the power K (^ 0.5: a ratio of temperatures as one of speeds). The span's number may be
+// written in words ("twice", "a third"; doc_words.hpp). FILE may
 // also be `output`: the page's last output block above the span, which verify_docs checks
 // against what its command printed (a page restating a number its own block shows).
 // FILE is a path from the top of the repository: docs/generated/NAME.md (committed; verify_docs
@@ -69,7 +71,8 @@ std::optional<ValueSource> parse_source(const std::string& source, std::string& 
 std::optional<double> source_value(const ValueSource& source, const std::string& file_text, std::string& error);
 
 /// A span's number: its value and one unit of its last digit. Thousands separators (13,092) are
-/// allowed; anything else but a number is not.
+/// allowed, and a number in words (doc_words.hpp: its unit the width it stands for); anything
+/// else is not.
 struct ShownNumber {
     double value = 0, unit = 1;
 };

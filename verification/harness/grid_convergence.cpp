@@ -134,7 +134,7 @@ GridConvergence grid_convergence(const std::vector<double>& h, const std::vector
     g.lo = *std::min_element(f.begin(), f.end()), g.hi = *std::max_element(f.begin(), f.end());
     g.data_range = (g.hi - g.lo) / static_cast<double>(n - 1);
     g.e_a = f[0] != 0.0 ? std::fabs((f[0] - f[1]) / f[0]) : kNaN;
-    g.p = g.f0 = g.p_u = g.fs = g.eps = g.sigma = g.e_ext = kNaN;
+    g.p = g.f0 = g.p_u = g.fs = g.eps = g.g0_u = g.sigma = g.e_ext = kNaN;
 
     double scale = 0.0;
     for (double v : f) scale = std::max(scale, std::fabs(v));
@@ -170,12 +170,18 @@ GridConvergence grid_convergence(const std::vector<double>& h, const std::vector
     g.f0 = observed.g0;
     g.e_ext = g.f0 != 0.0 ? std::fabs((g.f0 - f[0]) / g.f0) : kNaN;
     g.outside_bounds = g.f0 < bounds.lower || g.f0 > bounds.upper;
-    g.eps = at_pu.beta;
+    g.eps = at_pu.beta, g.g0_u = at_pu.g0;
     g.sigma = n > 2 ? std::sqrt(static_cast<double>(n) * at_pu.chisq / sw / static_cast<double>(n - 2)) : 0.0;
-    const double miss = std::fabs(f[0] - at_pu.g0 - at_pu.beta);
-    g.uncertainty = g.sigma < g.data_range ? g.fs * std::fabs(g.eps) + g.sigma + miss
-                                           : kFsFar * (g.sigma / g.data_range) * (std::fabs(g.eps) + g.sigma + miss);
+    g.uncertainty = uncertainty_at(g, h, f, 0);
     return g;
+}
+
+double uncertainty_at(const GridConvergence& g, const std::vector<double>& h, const std::vector<double>& f, std::size_t k) {
+    if (k >= h.size() || k >= f.size()) throw InputError("grid convergence: no grid " + std::to_string(k));
+    if (std::isnan(g.eps)) return g.uncertainty;  // a range: within noise, oscillatory, divergent
+    const double eps = g.eps * std::pow(h[k] / h[0], g.p_u), miss = std::fabs(f[k] - g.g0_u - eps);
+    return g.sigma < g.data_range ? g.fs * std::fabs(eps) + g.sigma + miss
+                                  : kFsFar * (g.sigma / g.data_range) * (std::fabs(eps) + g.sigma + miss);
 }
 
 }  // namespace granseg::verify

@@ -70,6 +70,7 @@ struct GridConvergence {
     double f0 = 0;                    // extrapolated value f(h -> 0) (monotone, two grids), else NaN
     double p_u = 0, fs = 0;           // order and factor of safety of U (NaN where none is formed)
     double eps = 0;                   // error estimate of f1 at the order p_u (NaN where none)
+    double g0_u = 0;                  // the fit's limit at the order p_u (NaN where none)
     double sigma = 0;                 // standard deviation of the fit at p_u (NaN where none)
     double data_range = 0;            // (max - min)/(n - 1)
     double uncertainty = 0;           // absolute, of f1 (the band f1 +- U)
@@ -77,6 +78,11 @@ struct GridConvergence {
     double lo = 0, hi = 0;            // smallest and largest value
     bool outside_bounds = false;      // f0 outside the quantity's physical range
 };
+
+/// The uncertainty of the value on grid k (0 the finest, the `uncertainty` above; h and f as given
+/// to grid_convergence) by the same rule, with the fit's error estimate at h_k, eps (h_k/h_1)^p_u,
+/// and its miss there. Within noise, oscillatory, divergent: the same range as `uncertainty`.
+double uncertainty_at(const GridConvergence& g, const std::vector<double>& h, const std::vector<double>& f, std::size_t k);
 
 /// The procedure of the header. h fine to coarse (strictly increasing, > 0), f and se (sampling
 /// errors >= 0, NaN read as 0) of the same length >= 2, the scheme's formal order pf > 0.

@@ -1,6 +1,7 @@
 #include "harness/program.hpp"
 
 #include "core/error.hpp"
+#include "harness/table_provenance.hpp"
 
 #include <time.h>
 
@@ -43,6 +44,7 @@ const char* program_name = "verification program";
 ProgramOptions parse_program_options(int argc, char** argv) {
     if (argc > 0) program_name = argv[0];
     std::set_terminate(on_uncaught_exception);
+    remember_command_line(argc, argv);  // for the tables it writes (table_provenance.hpp)
     ProgramOptions options;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];

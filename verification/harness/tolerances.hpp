@@ -10,4 +10,11 @@ namespace granseg::verify {
 /// each operation adds at most DBL_EPSILON/2, and 64 leaves room for cancellation in sums.
 constexpr double kRoundOff = 64 * DBL_EPSILON;
 
+/// Fig. 7d, "denser where mixed": the contrast of Phi between mixed and pure cells at equal depth
+/// must be at least this many spreads (the pooled standard deviation of Phi within a kind and a
+/// depth bin, the noise of one cell): a difference of bin means that exceeds two such spreads is
+/// no noise. One criterion for verify_tumbler e, bench_tumbler e and the Fig. 7 study's check i,
+/// which docs/sect4.2_fig7_study.md quotes from verify_tumbler's table.
+constexpr double kContrastSpreads = 2.0;
+
 }  // namespace granseg::verify

@@ -1,5 +1,6 @@
 #include "study/dt_study.hpp"
 
+#include "harness/table_provenance.hpp"
 #include "run/output.hpp"
 
 #include <algorithm>
@@ -150,7 +151,7 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
     }
     md << "\ndt_max " << dts << "; t_end " << fig7_number(o.run.t_end)
        << " s, averages over t >= " << fig7_number(o.run.average_from) << " s. Written by bench_time_step.\n";
-    write_file_atomically(o.run.data_dir + "/time_step.md", md.str());
+    write_generated_table(o.run.data_dir + "/time_step.md", md.str(), kDrumStudyParts);
 }
 
 }  // namespace granseg::verify

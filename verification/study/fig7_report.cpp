@@ -1,5 +1,6 @@
 #include "study/fig7_report.hpp"
 
+#include "harness/table_provenance.hpp"
 #include "run/output.hpp"
 
 #include <algorithm>
@@ -142,9 +143,10 @@ void write_fig7_summary(const Fig7Analysis& a, const Fig7Options& o) {
     md << "\nWritten by `bench_fig7_convergence`: the " << a.reference_series << " transport, dt_max "
        << fig7_number(1e3 * o.dt_ref)
        << " ms × 50/cells; ± after a value: its sampling error; distance: the value minus the limit (its bias, where the series "
-          "converges); band: the reference series' uncertainty plus the time-step study's at the finest grid, and its range the "
-          "band clipped to the quantity's physical range. Every series and number: `fig7_convergence.md`.\n";
-    write_file_atomically(o.data_dir + "/fig7_summary.md", md.str());
+          "converges); band: the finest value's grid uncertainty (the series' U) plus its time-step uncertainty (the time-step "
+          "study at the finest grid, at this run's step), and its range the band clipped to the quantity's physical range. Every "
+          "series and number: `fig7_convergence.md`.\n";
+    write_generated_table(o.data_dir + "/fig7_summary.md", md.str(), kDrumStudyParts);
 }
 
 }  // namespace
@@ -194,6 +196,13 @@ const Fig7Result& Fig7Analysis::loosest_run() const {
 const Fig7Result& Fig7Analysis::reference_run() const { return *dt_runs(finest().run.cells).front(); }
 
 double Fig7Analysis::band(int q) const {
+    // The finest grid run is the dt study's run with the largest step, its last.
+    const Fig7Estimate* dt = find(q, "dt finest");
+    return find(q, reference_series)->g.uncertainty + (dt ? uncertainty_at(dt->g, dt->h, dt->f, dt->h.size() - 1) : 0.0);
+}
+
+double Fig7Analysis::reference_band(int q) const {
+    // The reference run is the dt study's run with the smallest step, its first.
     const Fig7Estimate* dt = find(q, "dt finest");
     return find(q, reference_series)->g.uncertainty + (dt ? dt->g.uncertainty : 0.0);
 }
@@ -334,7 +343,7 @@ void write_fig7_convergence(const Fig7Analysis& a, const Fig7Options& o) {
        << "against the formal order " << fig7_number(kFormalOrder) << " (Fs = 1.25 within 10 %, else 3); two grids: "
        << "order " << fig7_number(kFormalOrder) << " assumed, Fs = 3.\n";
     write_file_atomically(o.data_dir + "/fig7_convergence.dat", conv.str());
-    write_file_atomically(o.data_dir + "/fig7_convergence.md", md.str());
+    write_generated_table(o.data_dir + "/fig7_convergence.md", md.str(), kDrumStudyParts);
     write_fig7_summary(a, o);
 }
 

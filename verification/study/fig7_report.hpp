@@ -52,14 +52,19 @@ struct Fig7Analysis {
     /// The reference of the work-against-error table: the finest grid's run with the smallest dt
     /// (the dt study's, or the grid run without one).
     const Fig7Result& reference_run() const;
-    /// The band of the finest grid run's value of `quantity`: the reference series' uncertainty
-    /// plus the dt study's at the finest grid (where the study has one). Why both: the grid series
-    /// refines h and dt together, and its one fit assumes that their errors share one order; the
-    /// observed orders (not within 10 % of the formal order 1, so Fs = 3) say the series is not in
+    /// The band of the finest grid run's value of `quantity`: its grid uncertainty (the reference
+    /// series' U) plus its time-step uncertainty (the dt study at the finest grid, evaluated at
+    /// this run's step, the study's largest; where the study has one). Why both: the grid series
+    /// refines h and dt together, and its one fit assumes that their errors share one order; where
+    /// the observed orders are not within 10 % of the formal order 1 (Fs = 3) the series is not in
     /// that asymptotic range, where a time error of another order could be absorbed into the fit
     /// or cancel against the grid's. The dt study measures the time step's own effect at the
     /// finest grid directly, and its uncertainty is added as that allowance.
     double band(int quantity) const;
+    /// The band of the reference run's value (the finest grid's smallest step, reference_run):
+    /// the same grid uncertainty (the grid's error taken as the same at the smaller step) plus
+    /// the dt study's uncertainty of its own finest value, this run's.
+    double reference_band(int quantity) const;
     /// The finest value's band f1 +- band(quantity), clipped to the quantity's physical range.
     std::pair<double, double> band_range(int quantity) const;
 };

@@ -5,6 +5,7 @@
 #include "drum/drum.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
+#include "harness/table_provenance.hpp"
 #include "harness/time_series.hpp"
 #include "run/output.hpp"
 #include "scenes/scene_kind.hpp"
@@ -138,7 +139,11 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     namespace fs = std::filesystem;
     const std::string dir = o.data_dir + "/" + o.study_dir + "/" + run.name, scene_path = dir + ".toml";
     const std::string text = scene_text(run, o);
-    const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text && fs::exists(dir + "/summary.dat");
+    // A run is reused only if this build's physics made it: its tables' provenance records say so
+    // (harness/table_provenance.hpp).
+    const std::string physics_path = dir + "/physics.txt", physics = this_build_physics_line();
+    const bool reuse = o.reuse && fs::exists(scene_path) && file_text(scene_path) == text && fs::exists(dir + "/summary.dat") &&
+                       fs::exists(physics_path) && file_text(physics_path) == physics;
     if (!reuse) {
         write_file_atomically(scene_path, text);
         const ThreadScope threads(o.threads);
@@ -146,6 +151,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
         // continues from its checkpoint, any other runs from t = 0 (docs/checkpoints.md): a killed study loses at most a
         // checkpoint interval per run.
         run_scene_file(scene_path, dir, Resume::if_compatible);
+        write_file_atomically(physics_path, physics);
     }
     Fig7Result r;
     r.run = run;

@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "flow/fields/flow_settings.hpp"
 #include "harness/side_by_side.hpp"
+#include "harness/table_provenance.hpp"
 #include "scenes/tumbler.hpp"
 #include "study/fig7_report.hpp"
 
@@ -98,6 +99,7 @@ boost::program_options::variables_map parse_study_command_line(const std::string
                                                                const boost::program_options::options_description& d,
                                                                Fig7Options& o) {
     namespace po = boost::program_options;
+    remember_command_line(argc, argv);  // for the tables it writes (harness/table_provenance.hpp)
     po::variables_map vm;
     try {
         po::store(po::parse_command_line(argc, argv, d), vm);
