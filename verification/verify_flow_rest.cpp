@@ -17,6 +17,7 @@
 //
 // Run: build/verification/verify_flow_rest [--data DIR]   (a few seconds)
 #include "closures/closures.hpp"
+#include "flow/faces/semi_implicit_faces.hpp"
 #include "flow/flow_solver.hpp"
 #include "harness/check_table.hpp"
 #include "harness/flow_reference.hpp"
@@ -155,6 +156,24 @@ double profile_error(const Material& m, const Run& r, DataTable& profiles, int n
 double mass_bound(double steps) { return steps * DBL_EPSILON; }
 
 /// Every check of this program in one time-stepping mode.
+/// The largest |Phi - Phi_start| over the rows of the bed (Phi_start at least kDust Phi_co). The
+/// dust above the surface is no balanced state: nothing carries it, it drains onto the bed at a
+/// pace proportional to what it holds, so an absolute bound on its change would measure how much
+/// dust the settling left there; its largest relative change is a note.
+double bed_change(CheckTable& table, const std::string& tag, const std::vector<double>& Phi, const std::vector<double>& Phi_start,
+                  double Phi_co) {
+    double bed = 0.0, dust = 0.0;
+    for (std::size_t k = 0; k < Phi_start.size(); ++k) {
+        const double change = std::fabs(Phi[k] - Phi_start[k]);
+        if (!is_dust(Phi_start[k], Phi_co))
+            bed = std::max(bed, change);
+        else if (Phi_start[k] > 0.0)
+            dust = std::max(dust, change / Phi_start[k]);
+    }
+    table.note(tag + "dust above the surface: largest relative change " + verify::format(dust));
+    return bed;
+}
+
 void check_mode(CheckTable& table, const verify::ProgramOptions& options, const Material& m, TimeStepping mode) {
     DataTable history;
     DataTable profiles;
@@ -185,9 +204,9 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     // and below the yield stress the model bed is a liquid of viscosity eta0 p/sqrt(T_floor) that
     // levels only over many seconds; the columns above test the approach to balance.)
     const Run box = settle(m, mode, 6, column30, kBalanced, nullptr, kBalancedStepping);
-    double change = 0.0;
-    for (int k = 0; k < 30; ++k) change = std::max(change, std::fabs(box.Phi[k] - column30[k]));
-    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| after 2 s", change, kRowRoundOff);
+    const double change = bed_change(table, verify::mode_tag(mode) + "box 6 x 30 (walls): ", box.Phi, column30, Phi_co);
+    table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi - settled column| in the bed after 2 s", change,
+                  kRowRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): spread of Phi across rows", box.spread, kRowRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): max |Phi u| after 2 s (m/s)", box.momentum, kMomentumRoundOff);
     table.at_most(verify::mode_tag(mode) + "box 6 x 30 (walls): relative mass change", std::fabs(box.mass_change),
@@ -195,10 +214,9 @@ void check_mode(CheckTable& table, const verify::ProgramOptions& options, const 
     if (mode == TimeStepping::semi_implicit) {  // the explicit step's dt is set by the sound speed
         const Run column = settle(m, mode, 1, bed(30, Phi_co, dense), kSettle, nullptr, kDefaultStepping);
         const Run kept = settle(m, mode, 6, column.Phi, kBalanced, nullptr, kDefaultStepping);
-        double moved = 0.0;
-        for (int k = 0; k < 30; ++k) moved = std::max(moved, std::fabs(kept.Phi[k] - column.Phi[k]));
         const std::string tag = verify::mode_tag(mode) + "default stepping: box 6 x 30 (walls): ";
-        table.at_most(tag + "max |Phi - settled column| after 2 s", moved, kDefaultRowRoundOff);
+        const double moved = bed_change(table, tag, kept.Phi, column.Phi, Phi_co);
+        table.at_most(tag + "max |Phi - settled column| in the bed after 2 s", moved, kDefaultRowRoundOff);
         table.at_most(tag + "spread of Phi across rows", kept.spread, kDefaultRowRoundOff);
         table.at_most(tag + "max |Phi u| after 2 s (m/s)", kept.momentum, kMomentumRoundOff);
     }

@@ -75,8 +75,8 @@ FlowSolver::FlowSolver(Grid grid, Material material, FlowSettings settings, Fram
         for (auto* f : {&F.mass, &F.energy, &F.mom_below, &F.p, &F.speed, &potential_.face[a]}) f->assign(faces, 0.0);
         for (int b = 0; b < 3; ++b) F.mom[b].assign(faces, 0.0);
         AxisPressureFaces& P = pressure_[a];
-        for (auto* f : {&P.p_lo, &P.p_hi, &P.corr_lo, &P.corr_hi, &P.force, &P.predictor, &P.coupling, &P.value_lo, &P.value_hi,
-                        &P.donor, &P.flux})
+        for (auto* f :
+             {&P.p_lo, &P.p_hi, &P.force, &P.predictor, &P.smoothing, &P.coupling, &P.value_lo, &P.value_hi, &P.donor, &P.flux})
             f->assign(faces, 0.0);
         P.reversed.assign(faces, 0);
     }

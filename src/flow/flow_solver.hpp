@@ -193,6 +193,8 @@ public:
     /// computed when first asked for after a step.
     const std::vector<double>& velocity_gradient(int b, int a) const;
     const std::vector<double>& mass_flux(int axis) const { return faces_[axis].mass; }
+    /// The last semi-implicit step's face smoothing velocities along `axis` (m/s; flow_faces/semi_implicit_faces.hpp).
+    const std::vector<double>& smoothing(int axis) const { return pressure_[axis].smoothing; }
     bool active(int axis) const { return mesh_.active[axis]; }
 
     /// Total granular volume, sum of Phi times cell volume over inside cells.

@@ -80,10 +80,8 @@ void FlowSolver::predictor_forces(double dt) {
     Stopwatch watch(timers_, FlowStage::predictor);
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) predictor_faces(mesh_, a, dt, state_, closures_, pressure_[a], faces_[a]);
+    face_force_part(mesh_, dt, state_, faces_, force_part_);
     explicit_update(mesh_, settings_, frame_, source_, t_forces_, dt, faces_, state_);
-    mesh_.parallel_for_inside([&](std::size_t c) {
-        for (int b = 0; b < 3; ++b) force_part_[b][c] = state_.u[b][c] - u_start_[b][c];
-    });
 }
 
 bool FlowSolver::pressure_correct(double dt) {

@@ -264,10 +264,11 @@ std::pair<double, double> dust_face(double u_dust) {
     state.u = {std::vector<double>{0.0, u_dust, 0.1, 0.0}, std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
     CellClosures closures;
     closures.Phi_co.assign(cells, 0.6);
+    closures.c.assign(cells, 1.0);  // the smoothing's time scale h/c on the open faces
     const std::array<std::vector<double>, 3> A{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0),
                                                std::vector<double>(cells, 0.0)};
     AxisPressureFaces pf;
-    pf.force.assign(faces, 0.0), pf.predictor.assign(faces, 0.0), pf.coupling.assign(faces, 0.0);
+    pf.force.assign(faces, 0.0), pf.predictor.assign(faces, 0.0), pf.smoothing.assign(faces, 0.0), pf.coupling.assign(faces, 0.0);
     pf.donor.assign(faces, 0.0), pf.flux.assign(faces, 0.0), pf.reversed.assign(faces, 0);
     pf.value_lo.assign(faces, 0.0), pf.value_hi.assign(faces, 0.0);
     face_velocity_predictor(mesh, FlowSettings{}, 0, 1e-3, state, closures, A, pf);

@@ -35,7 +35,8 @@ struct ManufacturedRun {
     std::vector<double> Phi, u_x, u_z, T;                  // the numerical fields at t_end, per cell
     Timing time;                                           // of the solver's time loop alone (the sources are set up before)
     long steps = 0;
-    FlowCounters work;  // the semi-implicit step's pressure solves, Newton steps, CG iterations
+    FlowCounters work;       // the semi-implicit step's pressure solves, Newton steps, CG iterations
+    double smoothing = 0.0;  // semi-implicit: mean |face smoothing velocity| over the interior faces of the last step (m/s)
 };
 
 /// The problem on n x n cells: its source terms at the time nodes, computed once (they cost

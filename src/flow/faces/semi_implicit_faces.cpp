@@ -43,8 +43,8 @@ void pressure_faces(const FlowMesh& mesh, int a, double gravity, const FlowState
     mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         FaceState L = face_state(state, &cl, a, lo), R = face_state(state, &cl, a, hi);
-        pf.corr_lo[f] = F.kind == kWallBelow ? 0.0 : hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
-        pf.corr_hi[f] = F.kind == kWallAbove ? 0.0 : hydrostatic_reconstruction(R, psi_face[f] - psi[hi], load[hi], carry[hi]);
+        if (F.kind != kWallBelow) hydrostatic_reconstruction(L, psi_face[f] - psi[lo], load[lo], carry[lo]);
+        if (F.kind != kWallAbove) hydrostatic_reconstruction(R, psi_face[f] - psi[hi], load[hi], carry[hi]);
         pf.p_lo[f] = L.p, pf.p_hi[f] = R.p;
         pf.reversed[f] = 0;
         const bool dilute = L.Phi < 0.5 * cl.Phi_co[lo] && R.Phi < 0.5 * cl.Phi_co[hi];
@@ -62,20 +62,37 @@ void predictor_faces(const FlowMesh& mesh, int a, double dt, const FlowState& st
     const double h = mesh.grid.h[a];
     mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
-        double P_lo = pf.p_lo[f], P_hi = pf.p_hi[f];
-        if (F.kind == kInterior) {  // each side's share of the (limited) face force
+        // Each side's p' plus its correction p - p' is its own p: the face fluxes are p less the
+        // side's share of the (limited) face force, so a cell's net force is its shares of D alone,
+        // exactly 0 where D = 0 (no rounding of p' + (p - p') to move a bed at rest).
+        double P_lo, P_hi;
+        if (F.kind == kInterior) {
             const double s_lo = mass_share(state.Phi[lo], state.Phi[hi]);
-            P_lo -= s_lo * pf.force[f];
-            P_hi += (1.0 - s_lo) * pf.force[f];
-        } else {  // a wall: the inside cell's p' plus the impedance of its motion towards the wall
+            P_lo = cl.p[lo] - s_lo * pf.force[f];
+            P_hi = cl.p[hi] + (1.0 - s_lo) * pf.force[f];
+        } else {  // a wall: the inside cell's p plus the impedance of its motion towards the wall
             const bool above = F.kind == kWallAbove;
             const std::size_t c = above ? lo : hi;
             const double towards = std::max(0.0, above ? state.u[a][c] : -state.u[a][c]);
-            P_lo = P_hi = (above ? P_lo : P_hi) + state.Phi[c] * cl.c[c] * towards / (1.0 + cl.c[c] * dt / h);
+            P_lo = P_hi = cl.p[c] + state.Phi[c] * cl.c[c] * towards / (1.0 + cl.c[c] * dt / h);
         }
         out.mass[f] = out.energy[f] = out.mom[t1][f] = out.mom[t2][f] = 0.0;
-        out.mom[a][f] = P_hi + pf.corr_hi[f];
-        out.mom_below[f] = P_lo + pf.corr_lo[f];
+        out.mom[a][f] = P_hi;
+        out.mom_below[f] = P_lo;
+    });
+}
+
+void face_force_part(const FlowMesh& mesh, double dt, const FlowState& state, const FlowFaces& faces,
+                     std::array<std::vector<double>, 3>& A) {
+    const double* Phi = state.Phi.data();
+    mesh.parallel_for_inside_cells([&](std::size_t c, int i, const AxisRow* ar) {
+        for (int b = 0; b < 3; ++b) {
+            AxisWeights w{};  // axis b alone: the predictor's faces carry no tangential momentum
+            w[b] = mesh.active[b] ? dt / mesh.grid.h[b] : 0.0;
+            AxisFields upper{}, lower{};
+            upper[b] = faces[b].mom_below.data(), lower[b] = faces[b].mom[b].data();
+            A[b][c] = Phi[c] > 0.0 ? -face_balance(upper, lower, w, i, ar) / Phi[c] : 0.0;
+        }
     });
 }
 
@@ -90,11 +107,11 @@ void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings,
                              const CellClosures& closures, const std::array<std::vector<double>, 3>& A, AxisPressureFaces& pf) {
     const double h = mesh.grid.h[a], Phi_vac = settings.Phi_vacuum;
     const double *Phi = state.Phi.data(), *u = state.u[a].data(), *acc = A[a].data();
-    const double* Phi_co = closures.Phi_co.data();
+    const double *Phi_co = closures.Phi_co.data(), *c = closures.c.data();
     mesh.parallel_for_faces(a, [&](const MeshFace& F) {
         const std::size_t f = F.f, lo = F.lo, hi = F.hi;
         if (!open_face(F, Phi, Phi_vac)) {
-            pf.predictor[f] = 0.0;
+            pf.predictor[f] = pf.smoothing[f] = 0.0;
             return;
         }
         // The mass-weighted mean; but a donor holding (almost) nothing moves its material at its
@@ -105,9 +122,12 @@ void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings,
         const double mean = mass_mean(Phi[lo], Phi[hi], u[lo], u[hi]);
         const std::size_t up = mean > 0.0 ? lo : hi;
         const double Phi_f = 0.5 * (Phi[lo] + Phi[hi]);
-        pf.predictor[f] = is_dust(Phi[up], Phi_co[up])
-                              ? (u[up] * mean > 0.0 ? u[up] : 0.0)
-                              : mean + dt * pf.force[f] / (h * Phi_f) - mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]);
+        // The smoothing: tau times the face's compact acceleration D/(h Phi_f) less the cells'
+        // accelerations interpolated to the face (A/dt: the force part per unit time).
+        const double compact = pf.force[f] / (h * Phi_f), interpolated = mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]) / dt;
+        const bool dust = is_dust(Phi[up], Phi_co[up]);
+        pf.smoothing[f] = dust ? 0.0 : smoothing_time(settings, h, std::max(c[lo], c[hi])) * (compact - interpolated);
+        pf.predictor[f] = dust ? (u[up] * mean > 0.0 ? u[up] : 0.0) : mean + pf.smoothing[f];
     });
 }
 

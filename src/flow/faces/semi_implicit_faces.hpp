@@ -22,19 +22,25 @@
 //   shares: cell lo takes Phi_lo/(Phi_lo + Phi_hi) of a face force, cell hi the rest, so both get
 //     the same velocity change (dust next to a dense cell takes its velocity from the mass that
 //     enters it, not from the dense cell's pressure).
-// 1. Predictor (predictor_faces, then the explicit update and the implicit viscosity of the
-//    explicit scheme): the cells feel their shares of D and their own weight at t^n (no mass
-//    moves), Coriolis, sources, then viscosity, giving u*; A is the part of the change that came
-//    from the forces (before viscosity). A wall pushes back on a cell moving towards it with the
-//    implicit acoustic impedance p' + Phi c u_n/(1 + c dt/h), which never reverses u_n.
+// 1. Predictor (predictor_faces, face_force_part, then the explicit update and the implicit
+//    viscosity of the explicit scheme): the cells feel their shares of D and their own weight at
+//    t^n (no mass moves), Coriolis, sources, then viscosity, giving u*; A is the part of the change
+//    that came from the face forces (the shares of D and the weight, before viscosity). A wall
+//    pushes back on a cell moving towards it with the implicit acoustic impedance
+//    p' + Phi c u_n/(1 + c dt/h), which never reverses u_n.
 // 2. Face predictor (face_velocity_predictor, then face_donors):
-//        U* = V* + dt D/(h Phi_f) - V_A,
+//        U* = V* + tau (D/(h Phi_f) - V_A/dt),   tau = min(h/c_f, smoothing_time_max),
 //    V*, V_A the normal components of u* and A at the face: the mass-weighted mean
 //    (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi), or the donor's own value when the donor holds
 //    (almost) no material (dust left behind by a moving cell is not dragged along; 0 where that
-//    value points away from the face: a gap opens and carries nothing). The face
-//    moves as its cells do after the viscous step, except that the cells' shared forces are
-//    replaced by the face's own compact D (Rhie-Chow: no checkerboard). Each cell gives the face a
+//    value points away from the face: a gap opens and carries nothing). The face moves as its
+//    cells do after the viscous step, plus the smoothing: tau times the face's own compact
+//    acceleration D/(h Phi_f) less the cells' accelerations from the same forces interpolated
+//    (Rhie-Chow: no checkerboard). The smoothing time is the acoustic time h/c_f of a cell (c_f
+//    the larger sound speed of the two), the largest for which the implicit step damps a pressure
+//    checkerboard monotonically at every dt; soft material (c_f < h/smoothing_time_max) takes
+//    smoothing_time_max. It does not depend on dt, so dt -> 0 converges to one spatial scheme;
+//    for smooth fields the smoothing is O(tau h^2) = O(h^3). Each cell gives the face a
 //    value of Phi: its own (transport = donor-cell), or its limited reconstruction at the face
 //    half-way through the step for the velocities U* (transport = muscl, transport/muscl_hancock.hpp;
 //    a dust cell gives its own Phi). The donor Phi_d is the value of the cell U* leaves, or the
@@ -69,9 +75,9 @@ class MusclHancock;
 /// Per axis and face, what the semi-implicit fluxes are built from.
 struct AxisPressureFaces {
     std::vector<double> p_lo, p_hi;          // reconstructed pressures p' of the lower and upper cell
-    std::vector<double> corr_lo, corr_hi;    // p - p' of the two cells
     std::vector<double> force;               // D, limited on dilute faces
     std::vector<double> predictor;           // U* for the current dt
+    std::vector<double> smoothing;           // the smoothing part of U*, tau (D/(h Phi_f) - mean(A)/dt)
     std::vector<double> coupling;            // K
     std::vector<double> value_lo, value_hi;  // the Phi the lower / upper cell gives the face (its own, or reconstructed)
     std::vector<double> donor;               // Phi_d
@@ -81,18 +87,26 @@ struct AxisPressureFaces {
 
 using PressureFaces = std::array<AxisPressureFaces, 3>;
 
-/// The reconstructed pressures, corrections and (limited) face forces of every face of `axis` at
+/// The reconstructed pressures and (limited) face forces of every face of `axis` at
 /// t^n (no reversed faces yet), and the face pressure (Phi_hi p'_lo + Phi_lo p'_hi)/(Phi_lo + Phi_hi)
 /// in faces.p (the effective pressure; walls: the inside cell's p').
 void pressure_faces(const FlowMesh& mesh, int axis, double gravity, const FlowState& state, const CellClosures& closures,
                     const Potential& psi, const AxisLoads& loads, AxisPressureFaces& pf, AxisFaces& faces);
 
-/// Part 1: zero mass, energy and tangential fluxes; normal momentum fluxes that give each side its
-/// share of D with the corrections p - p' (its weight); a wall pushes with the inside cell's p'
+/// Part 1: zero mass, energy and tangential fluxes; normal momentum fluxes p - (the side's share of
+/// D), p the side's own pressure (its reconstruction p' plus the correction p - p' that carries its
+/// weight), so that a cell's net force is its shares of D; a wall pushes with the inside cell's p
 /// plus the implicit acoustic impedance Phi c u_n/(1 + c dt/h) of a cell moving towards it, which
 /// never reverses u_n.
 void predictor_faces(const FlowMesh& mesh, int axis, double dt, const FlowState& state, const CellClosures& closures,
                      const AxisPressureFaces& pf, AxisFaces& faces);
+
+/// Part 1, per inside cell and before the explicit update: the force part A of the predictor, the
+/// velocity change -dt (normal momentum flux balance)/Phi that the faces of predictor_faces give
+/// each cell along each active axis (its shares of D and its weight; not Coriolis, sources or the
+/// gravity of an inactive axis, which have no compact counterpart at the face).
+void face_force_part(const FlowMesh& mesh, double dt, const FlowState& state, const FlowFaces& faces,
+                     std::array<std::vector<double>, 3>& A);
 
 /// Part 2a for `axis`: U* of every face (0 on walls and faces without material) from the predicted
 /// state (u*) and the force part A of the predictor.
@@ -112,6 +126,16 @@ void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& 
 /// Marks the faces whose mass flux leaves a cell that gives the face clearly less than the donor it
 /// was computed with (the pressure reversed the flow there); returns how many it marked.
 long mark_reversed_faces(const FlowMesh& mesh, int axis, const AxisFaces& faces, AxisPressureFaces& pf);
+
+/// The smoothing time tau of a face of cell size h whose larger sound speed is c: the acoustic time
+/// h/c of a cell where the material is stiff (c >= c* = h/smoothing_time_max); where it is soft
+/// (c < c*: loose or unloaded material, free surfaces) tau fades with c, smoothing_time_max c/c*,
+/// so that it never exceeds smoothing_time_max and vanishes where nothing carries a pressure
+/// (docs/flow_solver_pressure.md).
+inline double smoothing_time(const FlowSettings& settings, double h, double c) {
+    const double tau_max = settings.smoothing_time_max;
+    return c * tau_max >= h ? h / c : tau_max * tau_max * c / h;
+}
 
 /// Below this share of Phi_co a cell is dust: as a donor it carries its material at its own
 /// velocity, and its outflow is capped (dust_outflow_scale) instead of bounding dt (assumption F11).

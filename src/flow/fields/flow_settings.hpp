@@ -63,6 +63,7 @@ struct FlowSettings {
     double dt_min = 1e-9;                // s; a smaller step stops the run with InvariantError
     double dt_max = 2e-3;                // s (the drum's angle against dt_max: docs/flow_solver.md)
     double pressure_tolerance = 1e-2;    // semi-implicit: Newton stops at this share of the step's largest explicit mass change
+    double smoothing_time_max = 2e-3;    // s; semi-implicit: the face smoothing time tau = h/c at most this (soft material)
     double phi_hat = 0.5;                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
     std::optional<Transport> transport;  // unset: muscl with semi-implicit; the explicit step's HLLC fluxes are donor cell
     Limiter limiter = Limiter::mc;       // of the reconstruction with transport = muscl
