@@ -38,6 +38,7 @@
 // its slowest part is the tutorial's blocks). Its other modes: verify_docs --help.
 #include "harness/check_table.hpp"
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_excerpts.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
 #include "harness/doc_names.hpp"
@@ -138,6 +139,28 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
         }
         after_command = false;  // an output block belongs to the command block right before it
     }
+}
+
+/// The code excerpts of one page against the code they name (harness/doc_excerpts.hpp).
+void check_excerpts(CheckTable& t, const Repository& repo, const std::string& page, const std::string& text, long& shown,
+                    long& mutants_accepted) {
+    std::string error;
+    const auto found = excerpts_of(text, error);
+    t.count(page + ": malformed excerpt markers", error.empty() ? 0 : 1, 0);
+    if (!error.empty()) t.note("  " + error);
+    long wrong = 0;
+    for (const Excerpt& e : found) {
+        const ExcerptCheck c = check_excerpt(e, repo.root);
+        ++shown;
+        if (c.problem) {
+            ++wrong;
+            t.note("  line " + std::to_string(e.marker_line) + ": " + e.file + " " + e.symbol + ": " + *c.problem +
+                   " (make docs-refresh shows the whole definition, to trim again)");
+        } else {
+            mutants_accepted += excerpt_mutants_accepted(e.lines, c.definition);
+        }
+    }
+    t.count(page + ": code excerpts that differ from their code (of " + std::to_string(found.size()) + ")", wrong, 0);
 }
 
 struct NumberCounts {
@@ -357,12 +380,13 @@ int main(int argc, char** argv) {
     const TreeNames tree = tree_names(repo.root);
     BlockCounts n;
     std::vector<std::string> shown;
-    long generated_mutants_equal = 0, figure_mutants_unchanged = 0;
+    long generated_mutants_equal = 0, figure_mutants_unchanged = 0, excerpts = 0, excerpt_mutants_accepted = 0;
     for (const std::string& page : repo.pages) {
         const std::string text = read_text(repo.root / page);
         check_hygiene(t, repo, tree, page, text);
         check_blocks(t, page, text, scratch, n);
         check_generated(t, repo, page, text, shown, generated_mutants_equal);
+        check_excerpts(t, repo, page, text, excerpts, excerpt_mutants_accepted);
     }
     fs::remove_all(scratch);
     for (const auto& e : fs::directory_iterator(repo.root / "docs" / "generated"))
@@ -374,10 +398,12 @@ int main(int argc, char** argv) {
     check_provenance(t, repo.root, repo.pages, physics_fingerprints(repo.root));
     t.note(std::to_string(repo.pages.size()) + " pages, " + std::to_string(n.commands) + " command blocks, " +
            std::to_string(n.outputs) + " output blocks, " + std::to_string(n.numeric_lines) + " expected lines with " +
-           std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks");
+           std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks, " +
+           std::to_string(excerpts) + " code excerpts");
     t.count("output blocks not right after a command block", n.orphans, 0);
     t.count("self-check: expected lines still agreeing with one digit changed", n.mutants_agreeing, 0);
     t.count("self-check: generated blocks still equal with one digit changed", generated_mutants_equal, 0);
+    t.count("self-check: code excerpts still agreeing with a line changed or dropped without ...", excerpt_mutants_accepted, 0);
     t.count("self-check: figures whose fingerprint misses a changed digit", figure_mutants_unchanged, 0);
     return t.finish();
 }

@@ -111,6 +111,11 @@ bool within_last_digit(double printed, double shown, double unit) {
     return std::fabs(printed - shown) <= 0.5 * unit + kConversionSlack * std::fabs(shown);
 }
 
+std::string trimmed(const std::string& s) {
+    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
     std::istringstream in(text);

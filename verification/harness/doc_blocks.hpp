@@ -42,6 +42,9 @@ Tokens tokens_of(const std::string& line);
 /// its last digit: |printed - shown| <= unit/2 (plus the decimal conversions' round-off).
 bool within_last_digit(double printed, double shown, double unit);
 
+/// The text without its leading and trailing blanks and tabs.
+std::string trimmed(const std::string& s);
+
 /// The lines of a text.
 std::vector<std::string> lines_of(const std::string& text);
 
