@@ -34,7 +34,7 @@ namespace {
 
 constexpr int kCells = 26;                        // cells per diameter: the smallest tumbler grid (C4) but one
 constexpr double kEnd = 5.0;                      // s
-constexpr double kS = 5.0;                        // s/m, S0 of eq. (46)
+constexpr double kS = 5.0;                        // s^2/m, S0 of eq. (46)
 constexpr double kDtMax = FlowSettings{}.dt_max;  // the default step
 
 // Tolerances. The angle: the accuracy asked of the default step on the paper's drum (0.2 deg of
