@@ -44,6 +44,11 @@ BOOST_AUTO_TEST_CASE(expected_lines_match_in_order) {
     const Comparison wrong_order = compare({"c = 3", "a = 1"}, printed);
     BOOST_TEST(wrong_order.missing == 1);
     BOOST_TEST(wrong_order.first_missing == "a = 1");
+    // Lines left out are marked by `...` (the tutorial's rule): between, before and after.
+    BOOST_TEST(compare({"a = 1", "c = 3"}, printed).unmarked_gaps == 1);
+    BOOST_TEST(compare({"a = 1", "...", "c = 3"}, printed).unmarked_gaps == 0);
+    BOOST_TEST(compare({"...", "b = 2.5"}, printed).unmarked_gaps == 1);
+    BOOST_TEST(compare({"...", "b = 2.5", "..."}, printed).unmarked_gaps == 0);
     const Comparison changed = compare({"b = 2.6"}, printed);
     BOOST_TEST(changed.missing == 1);
     BOOST_TEST(changed.nearest == "b = 2.5");

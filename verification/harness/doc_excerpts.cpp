@@ -112,17 +112,12 @@ struct Matcher {
 
 }  // namespace
 
-bool is_ellipsis(const std::string& line) {
-    const std::string t = trimmed(line);
-    return t.rfind("...", 0) == 0 && (t.size() == 3 || trimmed(t.substr(3)).rfind("//", 0) == 0);
-}
-
 std::vector<Excerpt> excerpts_of(const std::string& page, std::string& error) {
     const std::vector<std::string> lines = lines_of(page);
     std::vector<Excerpt> found;
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string t = trimmed(lines[i]);
-        if (t.rfind(kMarkerOpen, 0) != 0) continue;
+        if (lines[i].rfind(kMarkerOpen, 0) != 0) continue;  // an indented marker is an example
         const std::string where = "line " + std::to_string(i + 1) + ": ";
         Excerpt e;
         e.marker_line = static_cast<int>(i + 1);

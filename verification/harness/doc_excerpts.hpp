@@ -38,9 +38,6 @@ std::vector<Excerpt> excerpts_of(const std::string& page, std::string& error);
 /// declaration ending in `;` is skipped) to the line that closes its braces. Empty if none.
 std::vector<std::string> definition_of(const std::string& source, const std::string& symbol);
 
-/// True for a line that stands for lines left out: `...` after blanks, then nothing or a comment.
-bool is_ellipsis(const std::string& line);
-
 /// Why the shown lines are not an excerpt of the definition (nullopt when they are): a line not in
 /// the definition after the previous one, or lines left out where no `...` says so.
 std::optional<std::string> excerpt_problem(const std::vector<std::string>& shown, const std::vector<std::string>& definition);
