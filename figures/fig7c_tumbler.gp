@@ -13,7 +13,7 @@ t_end = STATS_max
 load 'figures/tumbler_common.gp'   # after the stats: it sets the x range, which stats would filter by
 set terminal pngcairo size 1500,720 font "Sans,11" noenhanced
 set output outfile
-set multiplot title sprintf("Fig. 7c: the coupled drum after %g s, S = 1 s/m, %d cells per diameter", t_end, n)
+set multiplot title sprintf("Fig. 7c: the coupled drum after %g s, S0 = 1 s^2/m, %d cells per diameter", t_end, n)
 set origin 0, 0
 set size 0.52, 0.95
 set title sprintf("phi_hat at t = %g s (dashed: r = 0.34 R, 0.5 R, 0.8 R)", t_end)
