@@ -30,13 +30,13 @@ unset colorbox
 set origin 0.53, 0.05
 set size 0.46, 0.85
 set size noratio
-set title "segregation index and the regions' small-particle fractions"
+set title "index std(phi_hat)/sqrt(m(1-m)) and the regions' small-particle fractions"
 set xrange [0:t_end]
 set yrange [0:1]
 set xlabel "t  [s]"
 set ylabel ""
-set key center right
-plot history u 1:5 w l lw 2 lc rgb "black" t "index std(phi_hat)/sqrt(m(1-m))", \
+set key below horizontal   # off the curves, whatever the run
+plot history u 1:5 w l lw 2 lc rgb "black" t "index", \
      history u 1:7 w l lw 2 lc rgb "#d7191c" t "ring", \
      history u 1:9 w l lw 2 lc rgb "#fdae61" t "core", \
      history u 1:8 w l lw 2 lc rgb "#2c7bb6" t "periphery"
