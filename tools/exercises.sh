@@ -44,7 +44,7 @@ for patch in $(echo "$rows" | cut -d'|' -f1 | awk '!seen[$0]++'); do
       agrees=$([ "$verdict" = "$expected" ] && echo yes || echo NO)
       [ "$agrees" = yes ] || mismatches=$((mismatches + 1))
       printf '%-45s | %-28s | %-7s | %-7s | %s\n' "$patch" "$check" "$expected" "$verdict" "$agrees"
-      [ "$verdict" = FAIL ] && grep -E '\| FAIL$' "$log/${check#make }.log" | head -4 | sed 's/^/      /'
+      [ "$verdict" = FAIL ] && grep -E '\| FAIL$' "$log/${check#make }.log" | head -6 | sed 's/^/      /'
     done <<< "$rows"
   fi
   (cd "$scratch" && git apply -R "$root/$patch") || { echo "exercises: $patch cannot be taken back"; exit 1; }
