@@ -9,6 +9,8 @@ set title "phi (points) and Phi (line) against z"
 set xlabel "z"
 set ylabel "volume fraction"
 if (exists("zmin") && exists("zmax")) { set xrange [zmin:zmax] }
-set key outside right top
-plot for [i=1:words(files)] word(files, i) u 1:4 w p pt 7 ps 0.7 lc i t word(files, i).": phi", \
-     for [i=1:words(files)] word(files, i) u 1:2 w l lw 1.5 lc i t word(files, i).": Phi"
+set key below horizontal
+set offsets graph 0, graph 0, graph 0.05, graph 0.05   # a constant Phi off the frame
+run(i) = system("basename $(dirname '".word(files, i)."')")   # the run's directory names it
+plot for [i=1:words(files)] word(files, i) u 1:4 w p pt 7 ps 0.7 lc i t run(i).": phi", \
+     for [i=1:words(files)] word(files, i) u 1:2 w l lw 1.5 lc i t run(i).": Phi"
