@@ -15,8 +15,8 @@
 // Units: T in m^2/s^2, g in m/s^2, gamma_dot in 1/s, S^sl in m/s, so S0 in s^2/m and B/c in s^2
 // (kSegregationRateUnit, kLoadSharingOverDragUnit; tests/direction/units.cpp derives them from
 // eqs. 42, 45, 46 by a dimension check).
-// Sign: S^sl points against g's part along d_s, up the slope where small particles sink; the flux
-// coefficient a along an axis is that axis's component of S^sl (+ for z up, small particles down).
+// Sign: S^sl points against the part of g along d_s (upwards when gravity points down), and small
+// particles move against S^sl: a = (S^sl)_z > 0 for z up means small particles sinking.
 #pragma once
 
 #include <Eigen/Core>
