@@ -243,8 +243,7 @@ bench: deps
 # ---- beyond the two commands (recipes in mk/) ---------------------------------------------------
 # make figures-full: the long studies' figures; make docs-figures: the figures the pages show;
 # make docs-refresh: fresh generated tables into the pages (mk/pages.mk, docs/checked_pages.md);
-# make commands-cost: what make verify and make test cost on a fresh clone, for README.md.
-# make exercises: the tutorial's exercises by their reference solutions, judged as the page says.
+# make commands-cost: make verify and make test timed on a fresh clone; make exercises: the tutorial's.
 # make sanitize, make tsan: the address, undefined-behaviour and thread sanitizers (mk/sanitizers.mk).
 figures-full docs-figures sanitize tsan commands-cost exercises: deps
 docs-refresh: $(BUILD)/verification/verify_docs
