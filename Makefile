@@ -68,7 +68,7 @@ FULL_PNG     := $(FULL_GP:figures/%.gp=$(BUILD)/figures/%.png)
 RUNS         := $(BUILD)/runs
 
 .PHONY: FORCE all verify test figures fig7 bench figures-full sanitize tsan clean deps \
-        run-verification run-bench docs-figures docs-refresh format format-check commands-cost
+        run-verification run-bench docs-figures docs-refresh format format-check commands-cost exercises
 .DEFAULT_GOAL := all
 .DELETE_ON_ERROR:
 .SECONDARY:
@@ -243,9 +243,9 @@ bench: deps
 # ---- beyond the two commands (recipes in mk/) ---------------------------------------------------
 # make figures-full: the long studies' figures; make docs-figures: the figures the pages show;
 # make docs-refresh: fresh generated tables into the pages (mk/pages.mk, docs/checked_pages.md);
-# make commands-cost: what make verify and make test cost on a fresh clone, for README.md.
+# make commands-cost: make verify and make test timed on a fresh clone; make exercises: the tutorial's.
 # make sanitize, make tsan: the address, undefined-behaviour and thread sanitizers (mk/sanitizers.mk).
-figures-full docs-figures sanitize tsan commands-cost: deps
+figures-full docs-figures sanitize tsan commands-cost exercises: deps
 docs-refresh: $(BUILD)/verification/verify_docs
 include mk/pages.mk mk/sanitizers.mk mk/format.mk
 

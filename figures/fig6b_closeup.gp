@@ -19,7 +19,7 @@ set xlabel "z"
 set ylabel "phi, Phi"
 set xrange [0:0.22]
 set yrange [0.535:0.575]
-set key bottom right box opaque
+set key top left box opaque   # above the profiles, which lie below Phi(z) near the bottom
 plot f u 1:2 w l dt 2 lw 2.5 lc rgb "black" t "Phi(z)", \
      f u 1:8 w p pt 6 ps 1.8 lc rgb "#d62728" t "classic Godunov", \
      f u 1:7 w p pt 2 ps 1.5 lc rgb "#ff7f0e" t "classic upwind", \

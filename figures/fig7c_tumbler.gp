@@ -13,7 +13,7 @@ t_end = STATS_max
 load 'figures/tumbler_common.gp'   # after the stats: it sets the x range, which stats would filter by
 set terminal pngcairo size 1500,720 font "Sans,11" noenhanced
 set output outfile
-set multiplot title sprintf("Fig. 7c: the coupled drum after %g s, S = 1 s/m, %d cells per diameter", t_end, n)
+set multiplot title sprintf("Fig. 7c: the coupled drum after %g s, S0 = 1 s^2/m, %d cells per diameter", t_end, n)
 set origin 0, 0
 set size 0.52, 0.95
 set title sprintf("phi_hat at t = %g s (dashed: r = 0.34 R, 0.5 R, 0.8 R)", t_end)
@@ -30,13 +30,13 @@ unset colorbox
 set origin 0.53, 0.05
 set size 0.46, 0.85
 set size noratio
-set title "segregation index and the regions' small-particle fractions"
+set title "index std(phi_hat)/sqrt(m(1-m)) and the regions' small-particle fractions"
 set xrange [0:t_end]
 set yrange [0:1]
 set xlabel "t  [s]"
 set ylabel ""
-set key center right
-plot history u 1:5 w l lw 2 lc rgb "black" t "index std(phi_hat)/sqrt(m(1-m))", \
+set key below horizontal   # off the curves, whatever the run
+plot history u 1:5 w l lw 2 lc rgb "black" t "index", \
      history u 1:7 w l lw 2 lc rgb "#d7191c" t "ring", \
      history u 1:9 w l lw 2 lc rgb "#fdae61" t "core", \
      history u 1:8 w l lw 2 lc rgb "#2c7bb6" t "periphery"

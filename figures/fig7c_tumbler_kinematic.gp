@@ -5,6 +5,8 @@
 # Data: tumbler_final.dat (x z phi_hat), tumbler_outline.dat, tumbler_shells.dat (r phi_hat_initial
 #       phi_hat_final cells), tumbler_metrics.dat (t index core ring periphery mean core_deviation).
 # Usage (from the Makefile): gnuplot -e "datadir='build/data'; outfile='x.png'" figures/fig7c_tumbler_kinematic.gp
+#   Any run of a tumbler-kinematic scene, whatever its grid and length: datadir='out/drum40' (the
+#   cell size is read from tumbler_final.dat, the run's length from tumbler_metrics.dat).
 width = 1500; height = 720; fontsize = 11
 load 'figures/png_terminal.gnuplot'
 set output outfile
@@ -12,14 +14,18 @@ cells = datadir.'/tumbler_final.dat'
 outline = datadir.'/tumbler_outline.dat'
 shells = datadir.'/tumbler_shells.dat'
 metrics = datadir.'/tumbler_metrics.dat'
-h = 0.001
+h = real(system("sed -n 's/.*cell size \\([0-9.e+-]*\\) m.*/\\1/p' ".cells))   # m
+stats outline index 0 u 1 nooutput
+D = STATS_max - STATS_min
+stats metrics u 1 nooutput
+t_end = STATS_max
 r_core = 1.7
 r_ring = 2.5
-set multiplot title "Fig. 7c: kinematic drum after 25 s (2.5 revolutions), S = 1 s/m, 100 cells per diameter"
+set multiplot title sprintf("Fig. 7c: kinematic drum after %g s, %d cells per diameter", t_end, int(D/h + 0.5))
 
 set origin 0, 0
 set size 0.52, 0.95
-set title "phi_hat at t = 25 s (dashed circles: r_core = d - delta0, d)"
+set title sprintf("phi_hat at t = %g s (dashed circles: r_core = d - delta0, d)", t_end)
 set size ratio -1
 set xrange [-5.3:5.3]
 set yrange [-5.3:5.3]
@@ -55,19 +61,19 @@ set label 1 "core" at 0.3, 0.93
 set label 2 "ring" at 1.85, 0.07
 set label 3 "periphery" at 4.05, 0.93
 plot shells u (100*$1):2 w lp pt 6 lc rgb "#888888" t "t = 0", \
-     shells u (100*$1):3 w lp pt 7 lc rgb "#d7191c" t "t = 25 s"
+     shells u (100*$1):3 w lp pt 7 lc rgb "#d7191c" t sprintf("t = %g s", t_end)
 unset arrow
 unset label
 
 set origin 0.53, 0.0
 set size 0.46, 0.46
-set title "segregation index and regional small-particle fractions"
-set xrange [0:25]
+set title "index std(phi_hat)/sqrt(m(1-m)) and regional fractions"
+set xrange [0:t_end]
 set yrange [0:1]
 set xlabel "t  [s]"
 set ylabel ""
-set key center right
-plot metrics u 1:2 w l lw 2 lc rgb "black" t "index std(phi_hat)/sqrt(m(1-m))", \
+set key at graph 0.98, graph 0.42 top right horizontal maxrows 2   # between the periphery and the others
+plot metrics u 1:2 w l lw 2 lc rgb "black" t "index", \
      metrics u 1:4 w l lw 2 lc rgb "#d7191c" t "ring", \
      metrics u 1:3 w l lw 2 lc rgb "#fdae61" t "core", \
      metrics u 1:5 w l lw 2 lc rgb "#2c7bb6" t "periphery"

@@ -14,11 +14,15 @@ set grid
 set title "(a) packing limits: table and polynomial fits"
 set xlabel "phi_hat = phi / Phi"
 set ylabel "volume fraction"
+set yrange [0.56:0.71]   # room above the curves for the key
+set key top center maxrows 2
 plot datadir.'/packing_table.dat' u 1:2 w p pt 7 lc rgb "#1f77b4" t "Phi_rcp table", \
      datadir.'/packing_fit.dat'   u 1:2 w l lw 2 lc rgb "#1f77b4" t "Phi_rcp fit", \
      datadir.'/packing_table.dat' u 1:3 w p pt 5 lc rgb "#d62728" t "Phi_co table", \
      datadir.'/packing_fit.dat'   u 1:3 w l lw 2 lc rgb "#d62728" t "Phi_co fit"
 
+set autoscale y
+set key top left
 set title "(b) compressibility factor g (eq. 18 substitute)"
 set xlabel "Phi"
 set ylabel "g"

@@ -19,7 +19,8 @@ docs-refresh:
 # tells a stale image.
 DOC_FIGURES := fig_closures fig_direction fig3_integral_curves fig4a_regions fig4b_regions \
                fig5_region_c_example fig6a_profiles fig6b_closeup fig7b_kinematic \
-               fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic
+               fig7a_tumbler_kinematic fig7b_tumbler_kinematic fig7c_tumbler_kinematic \
+               fig_tutorial_regions fig_tutorial_drum fig_tutorial_coupled
 
 # The Fig. 7 study's figures come from a benchmark, Fig. 7c/7d at 100 cells from make fig7's run:
 # drawn when their data is there (make bench BENCH=bench_fig7_convergence, make fig7), else left as
@@ -42,6 +43,13 @@ docs-figures:
 	    || { rm -f docs/figures/$$f.png.tmp; echo "docs-figures: FAILED $$f"; exit 1; }; \
 	done; \
 	$(BUILD)/verification/verify_docs --fingerprint $$drawn
+
+# make exercises: each exercise of docs/tutorial.md applied by its reference solution
+# (verification/exercises/NAME.patch) to a scratch copy of the tree, built, and judged by the checks
+# the page names; fails when a verdict differs from the page's (tools/exercises.sh). On demand, not
+# part of make verify: it rebuilds what each patch touches, minutes on two cores.
+exercises: $(LIB) $(CLI) $(VERIFY_BIN)
+	@tools/exercises.sh $(BUILD) $(JOBS)
 
 # make commands-cost: what the README's two commands cost on a fresh clone of the commit (several
 # minutes: the whole of make verify, then make test), tabled as build/runs/commands_cost.md with its

@@ -7,6 +7,9 @@
 //     the scratch's own) and exits with the status its fence names; every ```output block right
 //     after it is printed, line by line in order, numbers to the precision the page shows
 //     (harness/doc_blocks.hpp);
+//   - every code excerpt (<!-- excerpt: FILE SYMBOL --> above a fenced block) is the symbol's
+//     definition with each run of lines it leaves out marked by a `...` line
+//     (harness/doc_excerpts.hpp); the tutorial's output blocks mark what they leave out too;
 //   - every value span (<!-- value: SOURCE -->0.936<!-- /value -->) shows its source's number to
 //     the precision the page writes, and no page but docs/history.md states a number in its prose
 //     outside a span, a block or a declared input (the ```inputs block of docs/checked_pages.md;
@@ -38,6 +41,7 @@
 // its slowest part is the tutorial's blocks). Its other modes: verify_docs --help.
 #include "harness/check_table.hpp"
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_excerpts.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
 #include "harness/doc_names.hpp"
@@ -69,6 +73,9 @@ namespace {
 constexpr int kBlockTimeout = 300;
 // A command block slower than this is named in the table (make verify's time budget).
 constexpr double kSlowBlock = 2.0;
+// Pages whose output blocks show what their commands print whole, or mark each place where they
+// leave lines out with a `...` line (the tutorial: a student compares line by line).
+const std::vector<std::string> kPagesMarkingOmissions = {"docs/tutorial.md"};
 
 struct Repository {
     fs::path root, build;
@@ -130,6 +137,10 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
                 t.note("  expected: " + c.first_missing);
                 t.note("  nearest printed line: " + c.nearest);
             }
+            if (std::count(kPagesMarkingOmissions.begin(), kPagesMarkingOmissions.end(), page) > 0) {
+                t.count(where + ": places where printed lines are left out without a ... line", c.unmarked_gaps, 0);
+                if (c.unmarked_gaps > 0) t.note("  first before: " + c.first_unmarked);
+            }
             n.numeric_lines += c.numeric_lines;
             n.numbers += c.numbers;
             n.mutants_agreeing += c.mutants_agreeing;
@@ -138,6 +149,28 @@ void check_blocks(CheckTable& t, const std::string& page, const std::string& tex
         }
         after_command = false;  // an output block belongs to the command block right before it
     }
+}
+
+/// The code excerpts of one page against the code they name (harness/doc_excerpts.hpp).
+void check_excerpts(CheckTable& t, const Repository& repo, const std::string& page, const std::string& text, long& shown,
+                    long& mutants_accepted) {
+    std::string error;
+    const auto found = excerpts_of(text, error);
+    t.count(page + ": malformed excerpt markers", error.empty() ? 0 : 1, 0);
+    if (!error.empty()) t.note("  " + error);
+    long wrong = 0;
+    for (const Excerpt& e : found) {
+        const ExcerptCheck c = check_excerpt(e, repo.root);
+        ++shown;
+        if (c.problem) {
+            ++wrong;
+            t.note("  line " + std::to_string(e.marker_line) + ": " + e.file + " " + e.symbol + ": " + *c.problem +
+                   " (make docs-refresh shows the whole definition, to trim again)");
+        } else {
+            mutants_accepted += excerpt_mutants_accepted(e.lines, c.definition);
+        }
+    }
+    t.count(page + ": code excerpts that differ from their code (of " + std::to_string(found.size()) + ")", wrong, 0);
 }
 
 struct NumberCounts {
@@ -306,7 +339,8 @@ Repository find_repository(const char* argv0) {
 constexpr const char* kUsage =
     "verify_docs: every page checked against the programs (docs/checked_pages.md)\n"
     "  verify_docs [--data DIR]          the full check (make verify runs it last)\n"
-    "  verify_docs --numbers             only the value spans and the numbers in prose (a second)\n"
+    "  verify_docs --numbers             only the value spans, the numbers in prose and the code\n"
+    "                                    excerpts (a second)\n"
     "  verify_docs --refresh             copy fresh generated tables into docs/generated/ and the pages,\n"
     "                                    then rewrite every value span (make docs-refresh)\n"
     "  verify_docs --fingerprint NAME..  record the fingerprints of reference figures just drawn\n"
@@ -346,6 +380,11 @@ int main(int argc, char** argv) {
     check_number_rules(t, inputs, numbers);
     t.note(std::to_string(numbers.spans) + " value spans agree with their sources");
     t.count("self-check: value spans still agreeing with one digit changed", numbers.mutants_agreeing, 0);
+    long excerpts = 0, excerpt_mutants = 0;
+    for (const std::string& page : repo.pages)
+        check_excerpts(t, repo, page, read_text(repo.root / page), excerpts, excerpt_mutants);
+    t.note(std::to_string(excerpts) + " code excerpts agree with their code or are counted above");
+    t.count("self-check: code excerpts still agreeing with a line changed or dropped without ...", excerpt_mutants, 0);
     if (numbers_only) return t.finish();
 
     const fs::path scratch = fs::temp_directory_path() / ("granseg_docs_" + std::to_string(::getpid()));
@@ -374,7 +413,8 @@ int main(int argc, char** argv) {
     check_provenance(t, repo.root, repo.pages, physics_fingerprints(repo.root));
     t.note(std::to_string(repo.pages.size()) + " pages, " + std::to_string(n.commands) + " command blocks, " +
            std::to_string(n.outputs) + " output blocks, " + std::to_string(n.numeric_lines) + " expected lines with " +
-           std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks");
+           std::to_string(n.numbers) + " numbers, " + std::to_string(shown.size()) + " generated blocks, " +
+           std::to_string(excerpts) + " code excerpts");
     t.count("output blocks not right after a command block", n.orphans, 0);
     t.count("self-check: expected lines still agreeing with one digit changed", n.mutants_agreeing, 0);
     t.count("self-check: generated blocks still equal with one digit changed", generated_mutants_equal, 0);

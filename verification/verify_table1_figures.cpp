@@ -6,7 +6,8 @@
 //     curve f = f(Q*) against f and against the slope r_0 gives.
 //   Fig. 4a/4b: regions A-F for Q_L = (0.15, 0.5) (left of Gamma) and G-J for Q_L = (0.4, 0.5)
 //     (right of Gamma), by classifying a 400 x 400 grid of Q_R with classify_table1. Checked:
-//     which regions appear, and that the exact flux equals eq. (63) at every grid point.
+//     which regions appear, and that the exact flux equals eq. (63) at every grid point. A-F again
+//     for Q_L = (0.1, 0.5), the left state of docs/tutorial.md's step 2 (tutorial_fig4a_*.dat).
 //   Fig. 5: the region C example Q_L = (0.1, 0.5), Q_R = (0.3, 0.8): waves in state space, on
 //     the flux curves f_L, f_R, and the profile phi(z/t). Checked: case, waves and their speeds
 //     as the caption of Fig. 5 states them, F = f_L^min, and every property of
@@ -223,6 +224,7 @@ int main(int argc, char** argv) {
     CheckTable t("Sect. 3.2 figures: integral curves (Fig. 3), regions A-J (Fig. 4), region C example (Fig. 5)");
     check_figure3(t, options);
     check_figure4(t, options, {0.15, 0.5, 1.0}, "fig4a", 1, 6);
+    check_figure4(t, options, {0.1, 0.5, 1.0}, "tutorial_fig4a", 1, 6);  // the left state of docs/tutorial.md, step 2
     check_figure4(t, options, {0.4, 0.5, 1.0}, "fig4b", 7, 10);
     check_figure5(t, options);
     return t.finish();

@@ -16,6 +16,7 @@
 // Writes time_step_small.dat (the four runs) to DATA.
 //
 // Run: build/verification/verify_tumbler_time_step [--data DIR]   (about a quarter of a minute)
+#include "direction/segregation_velocity.hpp"
 #include "harness/check_table.hpp"
 #include "harness/named_table.hpp"
 #include "harness/program.hpp"
@@ -34,7 +35,7 @@ namespace {
 
 constexpr int kCells = 26;                        // cells per diameter: the smallest tumbler grid (C4) but one
 constexpr double kEnd = 5.0;                      // s
-constexpr double kS = 5.0;                        // s/m, S0 of eq. (46)
+constexpr double kS = 5.0;                        // s^2/m, S0 of eq. (46)
 constexpr double kDtMax = FlowSettings{}.dt_max;  // the default step
 
 // Tolerances. The angle: the accuracy asked of the default step on the paper's drum (0.2 deg of
@@ -77,11 +78,11 @@ Quantities run_drum(bool feedback, double dt) {
 int main(int argc, char** argv) {
     const verify::ProgramOptions options = verify::parse_program_options(argc, argv);
     CheckTable t("Sect. 4.2: the coupled drum's time error at the default step (" + std::to_string(kCells) +
-                 " cells, S0 = " + verify::format(kS) + " s/m, " + verify::format(kEnd) + " s)");
+                 " cells, S0 = " + verify::format(kS) + " " + kSegregationRateUnit + ", " + verify::format(kEnd) + " s)");
     DataTable data;
     data.comment("verify_tumbler_time_step: the drum of Sect. 4.2 at " + std::to_string(kCells) +
-                 " cells per diameter, S0 = " + verify::format(kS) + " s/m, t_end " + verify::format(kEnd) +
-                 " s; angle: mean over t >= " + verify::format(kEnd / 2) +
+                 " cells per diameter, S0 = " + verify::format(kS) + " " + kSegregationRateUnit + ", t_end " +
+                 verify::format(kEnd) + " s; angle: mean over t >= " + verify::format(kEnd / 2) +
                  " s (deg); core, axis: small-particle shares at t_end (the drum's own regions)");
     Quantities q[2][2];  // [feedback][0: dt, 1: dt/4]
     for (int fb = 0; fb < 2; ++fb)

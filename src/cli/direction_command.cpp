@@ -77,13 +77,14 @@ int direction_main(const std::vector<std::string>& args) {
     std::string grad_text, u_text, gravity_text = "0 0 -9.81", method = "iterative";
     double T = -1, S0 = 1;
     DirectionOptions options;
+    const std::string S0_help = std::string("segregation rate S0 of eq. (46) (") + kSegregationRateUnit + ")";
     po::options_description desc("options (grad in 1/s, u in m/s; pass the rotating-frame u and grad in a rotating drum)");
     desc.add_options()("grad", po::value<std::string>(&grad_text)->required(),
                        "velocity gradient, 9 numbers row by row, grad(i,j) = du_i/dx_j")(
         "u", po::value<std::string>(&u_text)->required(), "velocity, 3 numbers")(
         "T", po::value<double>(&T),
         "granular temperature for S^sl (m^2/s^2; default: eq. (45) at gamma_dot, substitute material)")(
-        "S0", po::value<double>(&S0)->default_value(1.0), "segregation rate S0 of eq. (46) (s/m)")(
+        "S0", po::value<double>(&S0)->default_value(1.0), S0_help.c_str())(
         "gravity", po::value<std::string>(&gravity_text)->default_value(gravity_text), "gravity vector g (m/s^2), 3 numbers")(
         "shear-threshold",
         po::value<double>(&options.shear_threshold)

@@ -26,12 +26,23 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace granseg {
 
 /// The exponent b of g = (1 - Phi/Phi_rcp)^(-b) for the material's law (docs/assumptions.md A1).
+/// A case per law and no default: a new law without its case draws -Wswitch at compile time and,
+/// run anyway, throws instead of taking another law's exponent.
 inline double compressibility_exponent(const Material& m, double Phi_rcp) {
-    return m.g_law == CompressibilityLaw::power ? m.beta : 2.5 * Phi_rcp;
+    switch (m.g_law) {
+        case CompressibilityLaw::power:
+            return m.beta;
+        case CompressibilityLaw::lun_savage:
+            return 2.5 * Phi_rcp;
+    }
+    throw std::logic_error("compressibility_exponent: no case for the law \"" + choice_name(kCompressibilityLaws, m.g_law) +
+                           "\"");
 }
 
 /// Compressibility factor g(Phi; Phi_rcp), the substitute for the lost eq. (18): g -> 1 as

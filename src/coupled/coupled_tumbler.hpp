@@ -61,7 +61,7 @@ struct CoupledTumblerSetup {
     DrumSpec drum;
     Material material = Material::glass_substitute();
     FlowSettings flow;               // its phi_hat is replaced by the initial mixture's
-    double S = 1.0;                  // S0 of eq. (46), s/m (Sect. 4.2); 0: no segregation
+    double S = 1.0;                  // S0 of eq. (46), s^2/m (Sect. 4.2); 0: no segregation
     SegregationOptions segregation;  // scheme, limiter, cfl of the segregation sub-step
     double Phi_min = 0.05;           // no segregation in cells with Phi below this (C2)
     /// A diagnostic, not a physics option: no segregation in cells whose shear rate

@@ -1,7 +1,7 @@
 // The segregation velocity S^sl of Sect. 2.2 on the direction d_s of Sect. 2.3 (eqs. 36, 42, 45, 46).
 //
 //   solves      eqs. (42), (45), (46): the segregation velocity S^sl
-//   inputs      S0 (s/m), T (m^2/s^2), d_s, gravity g (m/s^2)
+//   inputs      S0 (s^2/m), T (m^2/s^2), d_s, gravity g (m/s^2)
 //   outputs     S^sl (m/s), the flux coefficients a_k = (S^sl)_k
 //   invariants  S^sl is parallel to d_s and vanishes where d_s = 0 or T = 0
 //
@@ -12,7 +12,11 @@
 // right-hand side, so per axis k the flux coefficient of src/riemann/segregation_flux.hpp is
 // a_k = (S^sl)_k (docs/assumptions.md S1): small particles move along -S^sl, i.e. along g
 // projected on d_s. Where d_s = 0 (no shear, undetermined direction) S^sl = 0.
-// Units: T in m^2/s^2, g in m/s^2, S0 in s/m, gamma_dot in 1/s, B/c in s^2/m; S^sl in m/s.
+// Units: T in m^2/s^2, g in m/s^2, gamma_dot in 1/s, S^sl in m/s, so S0 in s^2/m and B/c in s^2
+// (kSegregationRateUnit, kLoadSharingOverDragUnit; tests/direction/units.cpp derives them from
+// eqs. 42, 45, 46 by a dimension check).
+// Sign: S^sl points against the part of g along d_s (upwards when gravity points down), and small
+// particles move against S^sl: a = (S^sl)_z > 0 for z up means small particles sinking.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +24,10 @@
 #include <cmath>
 
 namespace granseg {
+
+/// The units of S0 (eq. 46) and of B/c (eq. 42), as the command line's help prints them.
+inline constexpr const char* kSegregationRateUnit = "s^2/m";
+inline constexpr const char* kLoadSharingOverDragUnit = "s^2";
 
 /// P g = (g . d_s) d_s (eq. 36).
 inline Eigen::Vector3d project(const Eigen::Vector3d& d_s, const Eigen::Vector3d& g) { return d_s.dot(g) * d_s; }

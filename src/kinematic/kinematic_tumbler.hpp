@@ -41,7 +41,7 @@ struct KinematicTumblerSetup {
     RollingDrumParameters drum;
     int cells_per_diameter = 100;
     double Phi = 0.6;                                  // constant granular volume fraction of the bed
-    double S = 1.0;                                    // segregation rate S0 of eq. (46), s/m (Sect. 4.2: S0 = 1)
+    double S = 1.0;                                    // segregation rate S0 of eq. (46), s^2/m (Sect. 4.2: S0 = 1)
     double gravity = 9.81;                             // |g|, m/s^2, along -z
     Material material = Material::glass_substitute();  // eta0, eps0 of eq. (45)
     SegregationOptions segregation;                    // scheme, limiter and the CFL number of the segregation sub-step

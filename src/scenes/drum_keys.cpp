@@ -13,6 +13,14 @@ void read_bounded_scheme(const SceneFile& scene, SegregationOptions& options) {
                    bounded_scheme_names());
 }
 
+double read_drum_key_or_other(const SceneFile& scene, const std::string& key, const Range& range, double fallback,
+                              const std::string& other, const Range& other_range, const std::function<double(double)>& to_key) {
+    if (!scene.has("drum", other)) return scene.number("drum", key, range, fallback);
+    if (scene.has("drum", key))
+        scene.fail("drum", other, "given together with " + key + ", its other name", "one of " + key + " and " + other);
+    return to_key(scene.number("drum", other, other_range));
+}
+
 void require_share(const SceneFile& scene, const Grid& grid, const char* key, const std::function<double(double, double)>& share,
                    const std::string& allowed, const std::function<bool(std::size_t cell)>& where) {
     for_each_bed_cell(grid, [&](const BedCell& b) {

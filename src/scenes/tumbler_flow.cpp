@@ -9,6 +9,7 @@
 #include "drum/drum_state.hpp"
 #include "flow/flow_loop.hpp"
 #include "flow/flow_tables.hpp"
+#include "scenes/drum_keys.hpp"
 #include "scenes/material_section.hpp"
 
 #include <algorithm>
@@ -187,7 +188,9 @@ DrumSpec read_drum(const SceneFile& scene) {
     read_drum_shape(scene, d);
     const DrumShape shape = d.cross_section();
     const double height = shape.highest() - shape.lowest(), h = d.diameter / d.cells_per_diameter;
-    d.fill_height = scene.number(s, "fill_height", Range::open(0, height), 0.75 * height);
+    // The kinematic drum's names are accepted too: fill_fraction (of the height) and rotation_rate.
+    d.fill_height = read_drum_key_or_other(scene, "fill_height", Range::open(0, height), 0.75 * height, "fill_fraction",
+                                           Range::open(0, 1), [height](double fraction) { return fraction * height; });
     // A bed and a space above it, each at least two cells deep, so the surface has cells on both sides.
     if (!(d.fill_height >= 2 * h && height - d.fill_height >= 2 * h))
         scene.fail(s, "fill_height",
@@ -195,7 +198,8 @@ DrumSpec read_drum(const SceneFile& scene) {
                        (d.fill_height < 2 * h ? "less than two cells of bed" : "less than two cells of space above the bed"),
                    format_number(2 * h) + " <= fill_height <= " + format_number(height - 2 * h) + " (two cells of " +
                        format_number(h) + " m below and above the surface)");
-    d.rps = scene.number(s, "rps", Range::closed(-100, 100), d.rps);
+    d.rps = read_drum_key_or_other(scene, "rps", Range::closed(-100, 100), d.rps, "rotation_rate", Range::closed(-100, 100),
+                                   [](double rps) { return rps; });
     d.axial_cells = static_cast<int>(scene.integer(s, "axial_cells", 1, 1000, 1));
     d.axial_length = scene.number(s, "axial_length", Range::above(0), d.axial_cells * d.diameter / d.cells_per_diameter);
     // The drum starts from the bed at rest in the lithostatic balance under g: without gravity

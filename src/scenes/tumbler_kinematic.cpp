@@ -30,9 +30,14 @@ TumblerKinematicScene read_tumbler_kinematic(const SceneFile& scene) {
     RollingDrumParameters& drum = k.drum;
     drum.diameter = scene.number("drum", "diameter", Range::above(0), drum.diameter);
     k.cells_per_diameter = static_cast<int>(scene.integer("drum", "cells_per_diameter", 4, 2000, k.cells_per_diameter));
-    drum.fill_fraction = scene.number("drum", "fill_fraction", Range::open(0, 1), drum.fill_fraction);
-    drum.rotation_rate = scene.number("drum", "rotation_rate", Range::any(), drum.rotation_rate);
-    if (drum.rotation_rate == 0.0) scene.fail("drum", "rotation_rate", "0 (no flow)", "a number != 0, rev/s");
+    // The coupled drum's names are accepted too: fill_height (m) and rps (drum_keys.hpp).
+    const double D = drum.diameter;
+    drum.fill_fraction = read_drum_key_or_other(scene, "fill_fraction", Range::open(0, 1), drum.fill_fraction, "fill_height",
+                                                Range::open(0, D), [D](double height) { return height / D; });
+    drum.rotation_rate = read_drum_key_or_other(scene, "rotation_rate", Range::any(), drum.rotation_rate, "rps", Range::any(),
+                                                [](double rps) { return rps; });
+    if (drum.rotation_rate == 0.0)
+        scene.fail("drum", scene.has("drum", "rps") ? "rps" : "rotation_rate", "0 (no flow)", "a number != 0, rev/s");
     drum.repose_angle = scene.number("drum", "repose_angle", Range::right_open(0, 90), drum.repose_angle);
     drum.layer_thickness = scene.number("drum", "layer_thickness", Range::above(0), drum.layer_thickness);
     {

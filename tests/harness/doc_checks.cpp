@@ -2,6 +2,7 @@
 // their sources, the numbers in prose, the history, outside-reference and link detectors, and the
 // figure fingerprint.
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_excerpts.hpp"
 #include "harness/doc_figures.hpp"
 #include "harness/doc_hygiene.hpp"
 #include "harness/doc_prose.hpp"
@@ -43,6 +44,11 @@ BOOST_AUTO_TEST_CASE(expected_lines_match_in_order) {
     const Comparison wrong_order = compare({"c = 3", "a = 1"}, printed);
     BOOST_TEST(wrong_order.missing == 1);
     BOOST_TEST(wrong_order.first_missing == "a = 1");
+    // Lines left out are marked by `...` (the tutorial's rule): between, before and after.
+    BOOST_TEST(compare({"a = 1", "c = 3"}, printed).unmarked_gaps == 1);
+    BOOST_TEST(compare({"a = 1", "...", "c = 3"}, printed).unmarked_gaps == 0);
+    BOOST_TEST(compare({"...", "b = 2.5"}, printed).unmarked_gaps == 1);
+    BOOST_TEST(compare({"...", "b = 2.5", "..."}, printed).unmarked_gaps == 0);
     const Comparison changed = compare({"b = 2.6"}, printed);
     BOOST_TEST(changed.missing == 1);
     BOOST_TEST(changed.nearest == "b = 2.5");
@@ -270,6 +276,55 @@ BOOST_AUTO_TEST_CASE(fingerprints_see_what_a_figure_shows_and_nothing_finer) {
     BOOST_TEST(data_fingerprint(data) == data_fingerprint("# x y (other comment)\n0.1 1.23412e-3\n0.2 2.0\n\n0.3 -3e-21\n"));
     BOOST_TEST(data_fingerprint(data) != data_fingerprint("# x y\n0.1 1.2361e-3\n0.2 2.0\n\n0.3 1e-20\n"));
     BOOST_TEST(data_fingerprint(data) != data_fingerprint("# x y\n0.1 1.2341e-3\n0.2 2.0\n0.3 1e-20\n"));
+}
+
+BOOST_AUTO_TEST_CASE(an_excerpt_is_its_code_with_every_omission_marked) {
+    const std::string source =
+        "double flux(double x);  // a declaration: skipped\n"
+        "/// flux(x): the comment is not the definition\n"
+        "double flux(double x) {\n"
+        "    const char* s = \"}\";  // a brace in a string\n"
+        "    if (x > 0) {\n"
+        "        return x;\n"
+        "    }\n"
+        "    return -x;\n"
+        "}\n"
+        "double other() { return flux(1.0); }\n";
+    const auto def = definition_of(source, "flux");
+    BOOST_TEST_REQUIRE(def.size() == 7u);
+    BOOST_TEST(def.front() == "double flux(double x) {");
+    BOOST_TEST(def.back() == "}");
+    BOOST_TEST(!excerpt_problem(def, def).has_value());
+    const std::vector<std::string> marked = {"double flux(double x) {", "    ...", "    return -x;", "}"};
+    BOOST_TEST(!excerpt_problem(marked, def).has_value());
+    // The break-to-fail cases: a line dropped with no `...`, a changed line, a `...` for nothing,
+    // a tail left out with no `...`, lines out of order.
+    BOOST_TEST(excerpt_problem({"double flux(double x) {", "    return -x;", "}"}, def).has_value());
+    BOOST_TEST(excerpt_problem({"double flux(double x) {", "    ...", "    return +x;", "}"}, def).has_value());
+    std::vector<std::string> nothing_left_out = def;
+    nothing_left_out.insert(nothing_left_out.begin() + 1, "    ...");
+    BOOST_TEST(excerpt_problem(nothing_left_out, def).has_value());
+    BOOST_TEST(
+        excerpt_problem({"double flux(double x) {", "    const char* s = \"}\";  // a brace in a string"}, def).has_value());
+    BOOST_TEST(!excerpt_problem({"double flux(double x) {", "    const char* s = \"}\";  // a brace in a string", "..."}, def)
+                    .has_value());
+    BOOST_TEST(excerpt_problem({"...", "    return -x;", "    if (x > 0) {", "..."}, def).has_value());
+    BOOST_TEST(excerpt_mutants_accepted(marked, def) == 0);
+    BOOST_TEST(definition_of(source, "nothing").empty());
+    BOOST_TEST(is_ellipsis("    ...  // the other sign"));
+    BOOST_TEST(!is_ellipsis("    x...;"));
+}
+
+BOOST_AUTO_TEST_CASE(excerpt_markers_name_a_file_and_a_symbol) {
+    std::string error;
+    const auto found = excerpts_of("text\n<!-- excerpt: src/a.cpp f -->\n```cpp\nint f() {\n```\nmore\n", error);
+    BOOST_TEST(error.empty());
+    BOOST_TEST_REQUIRE(found.size() == 1u);
+    BOOST_TEST(found[0].file == "src/a.cpp");
+    BOOST_TEST(found[0].symbol == "f");
+    BOOST_TEST(found[0].lines.size() == 1u);
+    excerpts_of("<!-- excerpt: src/a.cpp -->\n```cpp\n```\n", error);
+    BOOST_TEST(!error.empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -111,6 +111,16 @@ bool within_last_digit(double printed, double shown, double unit) {
     return std::fabs(printed - shown) <= 0.5 * unit + kConversionSlack * std::fabs(shown);
 }
 
+bool is_ellipsis(const std::string& line) {
+    const std::string t = trimmed(line);
+    return t.rfind("...", 0) == 0 && (t.size() == 3 || trimmed(t.substr(3)).rfind("//", 0) == 0);
+}
+
+std::string trimmed(const std::string& s) {
+    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
     std::istringstream in(text);
@@ -135,8 +145,13 @@ Comparison compare(const std::vector<std::string>& expected, const std::vector<s
     std::vector<Tokens> out;
     for (const auto& line : printed) out.push_back(tokens_of(line));
     std::size_t next = 0;  // expected lines match printed lines in order
+    bool marked = false;   // a `...` line since the last matched line
     for (const auto& line : expected) {
         if (collapse_blanks(line).empty()) continue;
+        if (is_ellipsis(line)) {
+            marked = true;
+            continue;
+        }
         const Tokens page = tokens_of(line);
         std::size_t k = next;
         while (k < out.size() && !agrees(out[k], page)) ++k;
@@ -155,8 +170,10 @@ Comparison compare(const std::vector<std::string>& expected, const std::vector<s
             c.numbers += static_cast<long>(page.numbers.size());
             if (agrees(out[k], mutated(page)) && c.mutants_agreeing++ == 0) c.first_mutant_agreeing = line;
         }
-        next = k + 1;
+        if (k > next && !marked && c.unmarked_gaps++ == 0) c.first_unmarked = line;
+        next = k + 1, marked = false;
     }
+    if (next < out.size() && !marked && c.missing == 0 && c.unmarked_gaps++ == 0) c.first_unmarked = "(the end of the block)";
     return c;
 }
 

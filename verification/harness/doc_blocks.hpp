@@ -2,10 +2,11 @@
 //   - a fenced block ```sh is a command block, run as one `sh -e` script; it must exit with 0, or N
 //     if its fence says ```sh exit=N;
 //   - a fenced block ```output right after a command block lists lines the commands must print, in
-//     order (other printed lines may come between them). Two lines agree when their words are
-//     equal (runs of blanks count as one blank) and their numbers agree to the precision the page
-//     prints: |printed - page| <= half a unit of the page's last digit (0.9382 stands for
-//     [0.93815, 0.93825]; an integer for itself);
+//     order (other printed lines may come between them; a line `...` marks where, and
+//     Comparison::unmarked_gaps counts the places left out without one). Two lines agree when
+//     their words are equal (runs of blanks count as one blank) and their numbers agree to the
+//     precision the page prints: |printed - page| <= half a unit of the page's last digit (0.9382
+//     stands for [0.93815, 0.93825]; an integer for itself);
 //   - a generated block is the text between `<!-- generated: NAME.md -->` and
 //     `<!-- end generated -->`: a copy of docs/generated/NAME.md, which a program writes.
 #pragma once
@@ -42,6 +43,13 @@ Tokens tokens_of(const std::string& line);
 /// its last digit: |printed - shown| <= unit/2 (plus the decimal conversions' round-off).
 bool within_last_digit(double printed, double shown, double unit);
 
+/// The text without its leading and trailing blanks and tabs.
+std::string trimmed(const std::string& s);
+
+/// True for a line that stands for lines left out: `...` after blanks, then nothing or a `//`
+/// comment (code excerpts and output blocks).
+bool is_ellipsis(const std::string& line);
+
 /// The lines of a text.
 std::vector<std::string> lines_of(const std::string& text);
 
@@ -58,6 +66,8 @@ struct Comparison {
     long missing = 0, mutants_agreeing = 0, numeric_lines = 0, numbers = 0;
     std::string first_missing, nearest;  // the first expected line not found, the printed line most like it
     std::string first_mutant_agreeing;   // the first expected line whose mutant still agrees
+    long unmarked_gaps = 0;              // printed lines left out (between, before or after) without a `...`
+    std::string first_unmarked;          // the expected line after the first such gap
 };
 Comparison compare(const std::vector<std::string>& expected, const std::vector<std::string>& printed);
 

@@ -1,6 +1,7 @@
 #include "harness/doc_refresh.hpp"
 
 #include "harness/doc_blocks.hpp"
+#include "harness/doc_excerpts.hpp"
 #include "harness/doc_provenance.hpp"
 #include "harness/doc_values.hpp"
 #include "harness/table_provenance.hpp"
@@ -33,6 +34,15 @@ int refresh_pages(const fs::path& root, const fs::path& build, const std::vector
             if (after != before) write_file_atomically((root / page).string(), after);
         }
         std::cout << "docs-refresh: " << name << " from " << fresh.string() << " (" << physics_verdict(text, now) << ")\n";
+    }
+    // Excerpts that no longer match their code: the whole definition, for the author to trim again.
+    for (const std::string& page : pages) {
+        int rewritten = 0;
+        const std::string before = read_text(root / page), after = with_fresh_excerpts(before, root, rewritten);
+        if (rewritten == 0) continue;
+        write_file_atomically((root / page).string(), after);
+        std::cout << "docs-refresh: " << page << ": " << rewritten
+                  << " code excerpts shown whole; trim them again with ... lines\n";
     }
     // Spans last: those that read a generated table then see its fresh copy.
     for (const std::string& page : pages) {

@@ -19,11 +19,6 @@ const std::string kOpen = "<!-- value: ";
 const std::string kOpenEnd = " -->";
 const std::string kClose = "<!-- /value -->";
 
-std::string trimmed(const std::string& s) {
-    const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-
 /// The cells of a markdown table row (without the outer bars).
 std::vector<std::string> cells_of(const std::string& row) {
     std::vector<std::string> cells;
