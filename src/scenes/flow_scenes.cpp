@@ -34,6 +34,10 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
     f.dt_min = scene.number(s, "dt_min", Range::open(0, 1), f.dt_min);
     f.dt_max = scene.number(s, "dt_max", Range::open(0, 10), f.dt_max);
     f.pressure_tolerance = scene.number(s, "pressure_tolerance", Range::open(0, 1), f.pressure_tolerance);
+    f.face_smoothing = parse_choice(
+        kFaceSmoothings,
+        scene.choice(s, "face_smoothing", choice_names(kFaceSmoothings), choice_name(kFaceSmoothings, f.face_smoothing)),
+        "face_smoothing");
     f.smoothing_time_max = scene.number(s, "smoothing_time_max", Range::open(0, 10), f.smoothing_time_max);
     if (mixture) f.phi_hat = scene.number(s, "phi_hat", Range::closed(0, 1), f.phi_hat);
     f.transport = parse_choice(

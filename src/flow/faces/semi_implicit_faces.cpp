@@ -126,7 +126,7 @@ void face_velocity_predictor(const FlowMesh& mesh, const FlowSettings& settings,
         // accelerations interpolated to the face (A/dt: the force part per unit time).
         const double compact = pf.force[f] / (h * Phi_f), interpolated = mass_mean(Phi[lo], Phi[hi], acc[lo], acc[hi]) / dt;
         const bool dust = is_dust(Phi[up], Phi_co[up]);
-        pf.smoothing[f] = dust ? 0.0 : smoothing_time(settings, h, std::max(c[lo], c[hi])) * (compact - interpolated);
+        pf.smoothing[f] = dust ? 0.0 : smoothing_time(settings, h, std::max(c[lo], c[hi]), dt) * (compact - interpolated);
         pf.predictor[f] = dust ? (u[up] * mean > 0.0 ? u[up] : 0.0) : mean + pf.smoothing[f];
     });
 }

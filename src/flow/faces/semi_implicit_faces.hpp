@@ -29,18 +29,20 @@
 //    pushes back on a cell moving towards it with the implicit acoustic impedance
 //    p' + Phi c u_n/(1 + c dt/h), which never reverses u_n.
 // 2. Face predictor (face_velocity_predictor, then face_donors):
-//        U* = V* + tau (D/(h Phi_f) - V_A/dt),   tau = min(h/c_f, smoothing_time_max),
+//        U* = V* + tau (D/(h Phi_f) - V_A/dt),   tau = dt, or h/c_f (face_smoothing),
 //    V*, V_A the normal components of u* and A at the face: the mass-weighted mean
 //    (Phi_lo x_lo + Phi_hi x_hi)/(Phi_lo + Phi_hi), or the donor's own value when the donor holds
 //    (almost) no material (dust left behind by a moving cell is not dragged along; 0 where that
 //    value points away from the face: a gap opens and carries nothing). The face moves as its
 //    cells do after the viscous step, plus the smoothing: tau times the face's own compact
 //    acceleration D/(h Phi_f) less the cells' accelerations from the same forces interpolated
-//    (Rhie-Chow: no checkerboard). The smoothing time is the acoustic time h/c_f of a cell (c_f
-//    the larger sound speed of the two), the largest for which the implicit step damps a pressure
-//    checkerboard monotonically at every dt; soft material (c_f < h/smoothing_time_max) takes
-//    smoothing_time_max. It does not depend on dt, so dt -> 0 converges to one spatial scheme;
-//    for smooth fields the smoothing is O(tau h^2) = O(h^3). Each cell gives the face a
+//    (Rhie-Chow: no checkerboard). By default the smoothing time is the step (Rhie and Chow's
+//    coefficient), which damps a checkerboard within a step at any dt but vanishes with dt. With
+//    face_smoothing = acoustic it is the acoustic time h/c_f of a cell (c_f the larger sound speed
+//    of the two), the largest for which the implicit step damps a pressure checkerboard
+//    monotonically at every dt, fading with c in soft material (c_f < h/smoothing_time_max): it
+//    does not depend on dt, so dt -> 0 converges to one spatial scheme; for smooth fields the
+//    smoothing is O(tau h^2) = O(h^3). Each cell gives the face a
 //    value of Phi: its own (transport = donor-cell), or its limited reconstruction at the face
 //    half-way through the step for the velocities U* (transport = muscl, transport/muscl_hancock.hpp;
 //    a dust cell gives its own Phi). The donor Phi_d is the value of the cell U* leaves, or the
@@ -131,8 +133,9 @@ long mark_reversed_faces(const FlowMesh& mesh, int axis, const AxisFaces& faces,
 /// h/c of a cell where the material is stiff (c >= c* = h/smoothing_time_max); where it is soft
 /// (c < c*: loose or unloaded material, free surfaces) tau fades with c, smoothing_time_max c/c*,
 /// so that it never exceeds smoothing_time_max and vanishes where nothing carries a pressure
-/// (docs/flow_solver_pressure.md).
-inline double smoothing_time(const FlowSettings& settings, double h, double c) {
+/// (docs/flow_solver_pressure.md). With face_smoothing = step it is the step dt itself.
+inline double smoothing_time(const FlowSettings& settings, double h, double c, double dt) {
+    if (settings.face_smoothing == FaceSmoothing::step) return dt;
     const double tau_max = settings.smoothing_time_max;
     return c * tau_max >= h ? h / c : tau_max * tau_max * c / h;
 }

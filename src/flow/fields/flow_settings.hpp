@@ -52,19 +52,31 @@ inline constexpr Choice<Transport> kTransports[] = {
      "limited linear reconstruction with a half-step predictor (MUSCL-Hancock): second order, bounded"},
 };
 
+/// The time of the face velocities' pressure smoothing (Rhie-Chow, docs/assumptions_flow.md F13):
+/// the step (Rhie and Chow's coefficient, the default: strong at every dt, but it vanishes with dt,
+/// so dt -> 0 does not converge to one scheme) or the cell's acoustic time (the same at every dt).
+enum class FaceSmoothing { step, acoustic };
+inline constexpr Choice<FaceSmoothing> kFaceSmoothings[] = {
+    {FaceSmoothing::step, "step", "tau_s = dt: damps a pressure checkerboard within a step at any dt; the scheme depends on dt"},
+    {FaceSmoothing::acoustic, "acoustic",
+     "tau_s = h/c (fading with c where the material is soft): converges in dt, damps a checkerboard by about 1 - tau_s/dt "
+     "per step at dt >> h/c"},
+};
+
 /// Numerical parameters of the flow solver; each default is justified in docs/assumptions.md (F*).
 struct FlowSettings {
     TimeStepping time_stepping = TimeStepping::semi_implicit;  // the default (docs/flow_solver.md Sect. 1)
     std::optional<ViscositySolve> viscosity;                   // unset: coupled with semi-implicit, split with explicit
     Factorisation factorisation = Factorisation::supernodal;   // of the coupled viscosity
-    double cfl = 0.9;                    // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
-    double T_floor = 1e-12;              // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
-    double Phi_vacuum = 1e-12;           // cells with Phi <= this are empty: u = 0, T = T_floor
-    double dt_min = 1e-9;                // s; a smaller step stops the run with InvariantError
-    double dt_max = 2e-3;                // s (the drum's angle against dt_max: docs/flow_solver.md)
-    double pressure_tolerance = 1e-2;    // semi-implicit: Newton stops at this share of the step's largest explicit mass change
-    double smoothing_time_max = 2e-3;    // s; semi-implicit: the face smoothing time tau = h/c at most this (soft material)
-    double phi_hat = 0.5;                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
+    double cfl = 0.9;                  // dt * sum_axis (|u_axis| + c)/h_axis <= cfl (explicit), |u_axis| only (semi-implicit)
+    double T_floor = 1e-12;            // m^2/s^2, lower bound of T (finite eta, lambda ~ T^(-1/2))
+    double Phi_vacuum = 1e-12;         // cells with Phi <= this are empty: u = 0, T = T_floor
+    double dt_min = 1e-9;              // s; a smaller step stops the run with InvariantError
+    double dt_max = 2e-3;              // s (the drum's angle against dt_max: docs/flow_solver.md)
+    double pressure_tolerance = 1e-2;  // semi-implicit: Newton stops at this share of the step's largest explicit mass change
+    FaceSmoothing face_smoothing = FaceSmoothing::step;  // semi-implicit: the face smoothing's time (F13)
+    double smoothing_time_max = 2e-3;                    // s; face_smoothing = acoustic: tau_s = h/c at most this (soft material)
+    double phi_hat = 0.5;                                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
     std::optional<Transport> transport;  // unset: muscl with semi-implicit; the explicit step's HLLC fluxes are donor cell
     Limiter limiter = Limiter::mc;       // of the reconstruction with transport = muscl
 };
