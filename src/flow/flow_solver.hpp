@@ -70,13 +70,14 @@
 //   step_size        Phi, u, c, Phi_co, Phi_rcp, faces M     dt
 //                    and speed (the last step's), dt_
 //   forces           Phi, u, T, p, c, Phi_co, dt; Phi u,     t_forces_ = t + dt/2, psi, loads_, pf (p',
-//                    Phi T                                   p - p', D; reversed = 0), faces p, eta,
+//                    Phi T                                   D; reversed = 0), faces p, eta,
 //                                                            lambda, eps Phi; m_start_, u_start_, E_start_
-//   predictor        pf, Phi, u, c, u_start_, t_forces_      faces (M = 0), Phi u, Phi T, u, T (Phi
-//                                                            with sources), force_part_
+//   predictor        pf, Phi, u, p, c, t_forces_             faces (M = 0), force_part_, Phi u, Phi T, u, T
+//                                                            (Phi with sources)
 //   viscosity        Phi, u, eta                             u, Phi u (u*; line_rhs_: split solves)
-//   pressure_faces   Phi, u, T, p, Phi_rcp, Phi_co,          pf (U*, donor, K, flux, reversed),
-//                    force_part_, pf, dp_                    mass_change_, faces, dust_scale_, Phi_after_
+//   pressure_faces   Phi, u, T, p, c, Phi_rcp, Phi_co,       pf (U*, smoothing, donor, K, flux,
+//                    force_part_, pf, dp_                    reversed), mass_change_, faces, dust_scale_,
+//                                                            Phi_after_
 //   pressure_solve   Phi, T, p, Phi_rcp, Phi_co, pf K,       dp_
 //                    mass_change_, dp_
 //   repeat           Phi_before_, m_start_, u_start_,        Phi, Phi u, u, Phi T, dp_, pf reversed
@@ -193,7 +194,7 @@ public:
     /// computed when first asked for after a step.
     const std::vector<double>& velocity_gradient(int b, int a) const;
     const std::vector<double>& mass_flux(int axis) const { return faces_[axis].mass; }
-    /// The last semi-implicit step's face smoothing velocities along `axis` (m/s; flow_faces/semi_implicit_faces.hpp).
+    /// The last semi-implicit step's face smoothing velocities along `axis` (m/s; flow/faces/semi_implicit_faces.hpp).
     const std::vector<double>& smoothing(int axis) const { return pressure_[axis].smoothing; }
     bool active(int axis) const { return mesh_.active[axis]; }
 
