@@ -5,6 +5,9 @@
 //   why         std::regex is a header-only template library whose matching code costs seconds
 //               of compile time in every file that instantiates it; behind this interface it is
 //               compiled once (text_pattern.cpp)
+//   speed       std::regex matches slowly (verify_docs asks some 60 expressions of each of 4,000
+//               lines), so a Pattern first looks for the literal text every match must contain
+//               (required_literals): a text without it is answered "no match" without the regex
 #pragma once
 
 #include <memory>
@@ -22,6 +25,12 @@ struct PatternMatch {
     std::string prefix, suffix;
     const std::string& operator[](std::size_t g) const { return groups[g]; }
 };
+
+/// Texts of which every match of the ECMAScript expression contains at least one: the longest
+/// run of literal characters that each top-level alternative must match (outside groups, classes
+/// and optional or repeated characters). Empty when some alternative has no such run: then no
+/// text can be ruled out. Lower case if ignore_case.
+std::vector<std::string> required_literals(const std::string& expression, bool ignore_case);
 
 /// An ECMAScript regular expression, optionally ignoring case.
 class Pattern {
