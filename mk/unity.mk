@@ -3,9 +3,8 @@
 # What it buys: the headers a folder shares (Eigen, Boost.Test, toml++, our own) are parsed, and
 # their templates instantiated and optimised, once per folder instead of once per file.
 # Measured on clean clones, building what .ci/run builds (the library, granseg, the verification
-# programs and the unit tests) with make -j2: 124 CPU-s against 242 file by file, so about a
-# minute of wall time on two cores. (A precompiled header for the verification programs saved 25
-# CPU-s more and compiling them at -O1 29 CPU-s, each under 15 s of wall time: both were dropped.)
+# programs and the unit tests) with make -j2: about half the CPU time of compiling file by file
+# (the measurements, and what was tried besides: docs/history.md, "make verify's CPU time").
 # The computed values are the same (the same flags for every file; inlining across files does not
 # change IEEE arithmetic without fast-math or contraction).
 #
