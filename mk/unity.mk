@@ -4,7 +4,8 @@
 # their templates instantiated and optimised, once per folder instead of once per file.
 # Measured on clean clones, building what .ci/run builds (the library, granseg, the verification
 # programs and the unit tests) with make -j2: about half the CPU time of compiling file by file
-# (the measurements, and what was tried besides: docs/history.md, "make verify's CPU time").
+# (the measurements, and what was tried besides: docs/history.md, "The two commands in under four
+# minutes" and "make verify's CPU time, second pass").
 # The computed values are the same (the same flags for every file; inlining across files does not
 # change IEEE arithmetic without fast-math or contraction).
 #
