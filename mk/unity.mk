@@ -28,9 +28,9 @@ HARNESS_OBJ := $(call units,$(HARNESS_SRC))
 STUDY_OBJ   := $(call units,$(STUDY_SRC))
 FLOW_OBJ    := $(call units,$(FLOW_SRC))
 # The unit tests are one unit, whatever their folder: every test file parses the same heavy headers
-# (Boost.Test, Eigen, the solvers'), which one unit per test folder parsed fifteen times (133 CPU-s
-# against 79 for one unit). tests/main.cpp defines the test program's entry (BOOST_TEST_MODULE
-# before Boost.Test's header): a unit of its own.
+# (Boost.Test, Eigen, the solvers'), which one unit per test folder parsed once per folder (the
+# measurement: docs/history.md). tests/main.cpp defines the test program's entry
+# (BOOST_TEST_MODULE before Boost.Test's header): a unit of its own.
 UNITY_ALONE := tests/main.cpp
 TEST_UNIT   := $(BUILD)/unity/tests.cpp
 TEST_OBJ    := $(call obj,$(TEST_UNIT) $(UNITY_ALONE))

@@ -34,21 +34,26 @@ double amplitude(double t) { return 1.0 + 0.5 * std::sin(2.0 * M_PI * t / kTau);
 /// sin A, cos A and sin 2A, remembered for recent arguments A: the sources' nested differences
 /// ask exact() at some nine abscissae per cell hundreds of times each (most of the program's
 /// time went to sin and cos). The same values as computed afresh: a hit needs A's very bits.
+/// Returned by value: the next call may overwrite the slot.
 struct Waves {
-    std::uint64_t bits = ~std::uint64_t{0};  // no argument's (a NaN's bits)
-    double sin = 0, cos = 0, sin2 = 0;
+    double sin, cos, sin2;
 };
-const Waves& waves(double A) {
-    thread_local std::array<Waves, 512> seen;
+Waves waves(double A) {
+    struct Slot {
+        bool filled = false;
+        std::uint64_t bits = 0;
+        Waves w{};
+    };
+    thread_local std::array<Slot, 512> seen;
     std::uint64_t bits;
     std::memcpy(&bits, &A, sizeof bits);
-    Waves& w = seen[(bits ^ (bits >> 32)) % seen.size()];
-    if (w.bits != bits) w = {bits, std::sin(A), std::cos(A), std::sin(2 * A)};
-    return w;
+    Slot& s = seen[(bits ^ (bits >> 32)) % seen.size()];
+    if (!s.filled || s.bits != bits) s = {true, bits, {std::sin(A), std::cos(A), std::sin(2 * A)}};
+    return s.w;
 }
 
 State exact(double x, double z, double t) {
-    const Waves X = waves(M_PI * x / L), Z = waves(M_PI * z / L);  // copies: Z may take X's place
+    const Waves X = waves(M_PI * x / L), Z = waves(M_PI * z / L);
     const double a = amplitude(t);
     return {kPhi0 + kdPhi * X.cos * Z.cos * a, kU * X.sin * Z.sin2 * a, -kU * X.sin2 * Z.sin * a,
             kT0 * (1.0 + kdT * X.cos * Z.cos * a)};
