@@ -59,6 +59,9 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
     const AxisFields S = axis_fields(faces, &AxisFaces::speed);
     const AxisWeights inv_h = axis_weights(mesh);
     const double sound = first ? 1.0 : 0.0, *cs = closures.c.data();
+    double inv_h_max = 0.0;
+    for (int a = 0; a < 3; ++a)
+        if (mesh.active[a]) inv_h_max = std::max(inv_h_max, 1.0 / mesh.grid.h[a]);
     const double *Phi = state.Phi.data(), *Phi_co = closures.Phi_co.data();
     const double* u[3] = {state.u[0].data(), state.u[1].data(), state.u[2].data()};
     auto wave = [&](std::size_t c, int i, const AxisRow* ar) {
@@ -69,11 +72,13 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
     };
     // Twice the last step's outflow rate; none for dust, whose outflow is capped instead.
     auto outflow = [&](std::size_t c, double out) { return is_dust(Phi[c], Phi_co[c]) ? 0.0 : 2.0 * out / Phi[c]; };
-    return largest_rates(mesh, state, closures, faces, wave, outflow);
+    StepRates rates = largest_rates(mesh, state, closures, faces, wave, outflow);
+    for (std::size_t c : mesh.inside_cells) rates.acoustic = std::max(rates.acoustic, cs[c] * inv_h_max);
+    return rates;
 }
 
 const char* step_bound_name(StepBound bound) {
-    static const char* const names[kStepBounds] = {"dt_max", "cfl", "outflow", "compaction", "growth", "halved"};
+    static const char* const names[kStepBounds] = {"dt_max", "cfl", "outflow", "compaction", "growth", "halved", "acoustic"};
     return names[static_cast<int>(bound)];
 }
 
@@ -83,10 +88,13 @@ StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t,
     const double dt_cfl = rates.waves > 0.0 ? settings.cfl / rates.waves : INFINITY;
     const double dt_outflow = rates.outflow > 0.0 ? kOutflowFraction / rates.outflow : INFINITY;
     const double dt_compaction = rates.compaction > 0.0 ? kCompactionFraction / rates.compaction : INFINITY;
-    dt = std::min({dt, dt_cfl, dt_outflow, dt_compaction});
+    const bool acoustic = settings.face_smoothing == FaceSmoothing::acoustic && rates.acoustic > 0.0;
+    const double dt_acoustic = acoustic ? settings.acoustic_courant_max / rates.acoustic : INFINITY;
+    dt = std::min({dt, dt_cfl, dt_outflow, dt_compaction, dt_acoustic});
     const StepBound bound = dt == dt_cfl          ? StepBound::cfl
                             : dt == dt_outflow    ? StepBound::outflow
                             : dt == dt_compaction ? StepBound::compaction
+                            : dt == dt_acoustic   ? StepBound::acoustic
                                                   : StepBound::dt_max;
     if (!(dt >= settings.dt_min) && t_end - t > settings.dt_min) {
         double c_max = 0.0, Phi_at = 0.0;

@@ -2,6 +2,8 @@
 //   cfl / max_cells sum_axis max(wave speed over the cell's two faces)/h_axis   (CFL, first-order unsplit),
 //   kOutflowFraction * Phi / (outflow rate)   (Phi stays > 0, T and u_t stay convex combinations),
 //   kCompactionFraction * (Phi_rcp - Phi) / (net inflow rate)   (Phi stays < Phi_rcp, F4),
+//   acoustic_courant_max / max_cells max_axis c/h_axis   (semi-implicit step with the acoustic
+//       face smoothing: dt at most that many smoothing times tau_s = h/c, F13),
 //   dt_max and the time left to t_end.
 //
 //   solves      nothing over time: the dt of a step, and whether a step's fluxes keep the bounds
@@ -34,9 +36,10 @@ constexpr double kOutflowFraction = 0.9;
 constexpr double kCompactionFraction = 0.5;
 
 /// The largest rates over inside cells (1/s): wave speeds over h, outflow over Phi, net inflow
-/// over the gap Phi_rcp - Phi.
+/// over the gap Phi_rcp - Phi, and (semi-implicit step) the sound speed over h, the inverse of the
+/// shortest acoustic face smoothing time.
 struct StepRates {
-    double waves = 0.0, outflow = 0.0, compaction = 0.0;
+    double waves = 0.0, outflow = 0.0, compaction = 0.0, acoustic = 0.0;
 };
 
 /// The rates of the explicit step from the face fluxes and speeds of every active axis.
@@ -47,7 +50,8 @@ StepRates explicit_step_rates(const FlowMesh& mesh, const FlowState& state, cons
 /// dust cells (their outflow is capped, flow/faces/semi_implicit_faces.hpp, assumption F11), and their
 /// compaction rate. The first
 /// step also counts the sound speed, as the explicit step does: it starts from a state that need
-/// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step).
+/// not be in balance, whose waves the steps resolve while dt grows (kStepGrowth per step). The
+/// acoustic rate is the largest c/h_axis of a cell.
 StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, const CellClosures& closures, const FlowFaces& faces,
                               bool first);
 
@@ -55,9 +59,10 @@ StepRates material_step_rates(const FlowMesh& mesh, const FlowState& state, cons
 constexpr double kStepGrowth = 2.0;
 
 /// What set a step's dt: dt_max or t_end, the CFL condition, the outflow or compaction bound,
-/// the semi-implicit step's growth limit (kStepGrowth), or halving after a broken bound.
-enum class StepBound { dt_max, cfl, outflow, compaction, growth, halved };
-constexpr int kStepBounds = 6;
+/// the semi-implicit step's growth limit (kStepGrowth), halving after a broken bound, or the
+/// acoustic Courant number of the face smoothing (acoustic_courant_max).
+enum class StepBound { dt_max, cfl, outflow, compaction, growth, halved, acoustic };
+constexpr int kStepBounds = 7;
 /// The bound's name as in the output tables ("dt_max", "cfl", ...).
 const char* step_bound_name(StepBound bound);
 
@@ -67,7 +72,8 @@ struct StepSize {
 };
 
 /// dt from the rates (cfl on the wave rate, kOutflowFraction and kCompactionFraction on the
-/// others), dt_max and t_end - t, and which of them set it. Throws InvariantError naming the bound
+/// others, acoustic_courant_max on the acoustic rate when face_smoothing = acoustic), dt_max and
+/// t_end - t, and which of them set it. Throws InvariantError naming the bound
 /// that set it if dt falls below dt_min before t_end.
 StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t, double t_end, const StepRates& rates,
                    const FlowState& state, const CellClosures& closures);

@@ -39,6 +39,7 @@ FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
         scene.choice(s, "face_smoothing", choice_names(kFaceSmoothings), choice_name(kFaceSmoothings, f.face_smoothing)),
         "face_smoothing");
     f.smoothing_time_max = scene.number(s, "smoothing_time_max", Range::open(0, 10), f.smoothing_time_max);
+    f.acoustic_courant_max = scene.number(s, "acoustic_courant_max", Range::open(0, 1e6), f.acoustic_courant_max);
     if (mixture) f.phi_hat = scene.number(s, "phi_hat", Range::closed(0, 1), f.phi_hat);
     f.transport = parse_choice(
         kTransports, scene.choice(s, "transport", choice_names(kTransports), choice_name(kTransports, transport_scheme(f))),

@@ -1,7 +1,8 @@
 // The face velocity's pressure smoothing of the semi-implicit step (flow/faces/semi_implicit_faces.hpp,
-// docs/flow_solver_pressure.md). With face_smoothing = acoustic its strength is the scheme's
-// smoothing time tau, not the step dt, and the checkerboard it is there to suppress is damped at the
-// smallest steps the control takes; with the default, step, its time is dt.
+// docs/flow_solver_pressure.md). With the default, face_smoothing = acoustic, its strength is the
+// scheme's smoothing time tau, not the step dt, the checkerboard it is there to suppress is damped at
+// the smallest steps the control takes, and no step is longer than acoustic_courant_max smoothing
+// times; with face_smoothing = step its time is dt.
 #include "closures/closures.hpp"
 #include "flow/faces/semi_implicit_faces.hpp"
 #include "flow/flow_solver.hpp"
@@ -11,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <tuple>
 #include <vector>
 
 using namespace granseg;
@@ -82,7 +85,7 @@ BOOST_AUTO_TEST_CASE(the_smoothing_of_a_state_is_the_same_at_dt_and_dt_over_2) {
     BOOST_TEST(largest > 1e-6);  // the state does have a smoothing to compare
 }
 
-BOOST_AUTO_TEST_CASE(the_default_smoothing_takes_the_step_as_its_time) {
+BOOST_AUTO_TEST_CASE(the_step_smoothing_takes_the_step_as_its_time) {
     // face_smoothing = step (Rhie and Chow's coefficient): the same state's smoothing halves with dt.
     const double dt = FlowSettings{}.dt_max;
     const std::vector<double> full = smoothing_velocities(dt, FaceSmoothing::step),
@@ -125,6 +128,42 @@ BOOST_AUTO_TEST_CASE(a_checkerboard_is_damped_at_the_smallest_steps) {
     for (int step = 0; step < 10; ++step) solver.step();
     BOOST_TEST(solver.last_dt() <= s.dt_max);
     BOOST_TEST(checkerboard() < 0.05 * start);
+}
+
+BOOST_AUTO_TEST_CASE(no_step_is_longer_than_the_acoustic_courant_number_allows) {
+    // A packed column at rest under gravity with dt_max at 8 ms: the material speeds allow that
+    // step, the acoustic smoothing does not (tau_s = h/c, dt <= acoustic_courant_max tau_s). With
+    // face_smoothing = step the same column takes dt_max.
+    const int n = 20;
+    const double height = 0.04, h = height / n;
+    const Material m = Material::glass_substitute();
+    const Grid grid = Grid::column(n, height);
+    auto run = [&](FaceSmoothing mode) {
+        FlowSettings s;
+        s.face_smoothing = mode;
+        s.dt_max = 8e-3;
+        const double Phi0 = 0.5 * (m.packing.Phi_co(s.phi_hat) + m.packing.Phi_rcp(s.phi_hat));
+        std::vector<double> Phi(grid.cells(), Phi0), zero(grid.cells(), 0.0), T(grid.cells(), s.T_floor);
+        FlowSolver solver(grid, m, s, Frame{});
+        solver.set_state(Phi, {zero, zero, zero}, T);
+        for (int step = 0; step < 29; ++step) solver.step();
+        double c_max = 0.0;  // the largest sound speed at the start of the last step, from which its dt is set
+        for (int k = 0; k < n; ++k)
+            c_max = std::max(c_max, std::sqrt(evaluate_closures_at(m, solver.Phi()[k], solver.T()[k],
+                                                                   m.packing.Phi_rcp(s.phi_hat), m.packing.Phi_co(s.phi_hat))
+                                                  .c2));
+        solver.step();
+        return std::make_tuple(solver.last_dt(), solver.last_bound(), s.acoustic_courant_max * h / c_max, s.dt_max);
+    };
+    const auto [dt, bound, dt_acoustic, dt_max] = run(FaceSmoothing::acoustic);
+    BOOST_TEST(dt_acoustic < 0.5 * dt_max);  // the bound is what sets the step here
+    BOOST_TEST(std::string(step_bound_name(bound)) == "acoustic");
+    BOOST_TEST(dt <= dt_acoustic * (1.0 + 1e-9));  // the same sound speeds, up to round-off
+    BOOST_TEST(dt > 0.5 * dt_acoustic);            // set by the state of the step before, which changed little
+    const auto [dt_step, bound_step, unused, dt_max_step] = run(FaceSmoothing::step);
+    BOOST_TEST(std::string(step_bound_name(bound_step)) != "acoustic");
+    BOOST_TEST(dt_step > dt);
+    (void)unused, (void)dt_max_step;
 }
 
 BOOST_AUTO_TEST_SUITE_END()

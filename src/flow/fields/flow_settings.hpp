@@ -53,8 +53,8 @@ inline constexpr Choice<Transport> kTransports[] = {
 };
 
 /// The time of the face velocities' pressure smoothing (Rhie-Chow, docs/assumptions_flow.md F13):
-/// the step (Rhie and Chow's coefficient, the default: strong at every dt, but it vanishes with dt,
-/// so dt -> 0 does not converge to one scheme) or the cell's acoustic time (the same at every dt).
+/// the cell's acoustic time (the default: the same at every dt, so dt -> 0 converges to one scheme)
+/// or the step (Rhie and Chow's coefficient: strong at every dt, but it vanishes with dt).
 enum class FaceSmoothing { step, acoustic };
 inline constexpr Choice<FaceSmoothing> kFaceSmoothings[] = {
     {FaceSmoothing::step, "step", "tau_s = dt: damps a pressure checkerboard within a step at any dt; the scheme depends on dt"},
@@ -74,9 +74,10 @@ struct FlowSettings {
     double dt_min = 1e-9;              // s; a smaller step stops the run with InvariantError
     double dt_max = 2e-3;              // s (the drum's angle against dt_max: docs/flow_solver.md)
     double pressure_tolerance = 1e-2;  // semi-implicit: Newton stops at this share of the step's largest explicit mass change
-    FaceSmoothing face_smoothing = FaceSmoothing::step;  // semi-implicit: the face smoothing's time (F13)
-    double smoothing_time_max = 2e-3;                    // s; face_smoothing = acoustic: tau_s = h/c at most this (soft material)
-    double phi_hat = 0.5;                                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
+    FaceSmoothing face_smoothing = FaceSmoothing::acoustic;  // semi-implicit: the face smoothing's time (F13)
+    double smoothing_time_max = 2e-3;    // s; face_smoothing = acoustic: tau_s = h/c at most this (soft material)
+    double acoustic_courant_max = 5.0;   // face_smoothing = acoustic: dt * max_axis c/h_axis <= this (F13)
+    double phi_hat = 0.5;                // small-particle share used for Phi_rcp, Phi_co when no phi field is set
     std::optional<Transport> transport;  // unset: muscl with semi-implicit; the explicit step's HLLC fluxes are donor cell
     Limiter limiter = Limiter::mc;       // of the reconstruction with transport = muscl
 };
