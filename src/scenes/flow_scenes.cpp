@@ -13,9 +13,9 @@
 
 namespace granseg {
 
-FlowSettings read_flow_settings(const SceneFile& scene, bool mixture) {
+FlowSettings read_flow_settings(const SceneFile& scene, bool mixture, const FlowSettings& defaults) {
     const std::string s = "flow";
-    FlowSettings f;
+    FlowSettings f = defaults;
     f.time_stepping =
         parse_choice(kTimeSteppings,
                      scene.choice(s, "time_stepping", choice_names(kTimeSteppings), choice_name(kTimeSteppings, f.time_stepping)),

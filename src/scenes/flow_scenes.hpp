@@ -13,8 +13,9 @@
 namespace granseg {
 
 /// Reads the optional [flow] section: time_stepping, viscosity, cfl, T_floor, Phi_vacuum, dt_min, dt_max and, if `mixture`,
-/// phi_hat (a scene whose mixture comes from elsewhere leaves it out, so the key is rejected).
-FlowSettings read_flow_settings(const SceneFile& scene, bool mixture = true);
+/// phi_hat (a scene whose mixture comes from elsewhere leaves it out, so the key is rejected); a key
+/// the scene leaves out keeps its value in `defaults` (the coupled drum's dt_max is its own).
+FlowSettings read_flow_settings(const SceneFile& scene, bool mixture = true, const FlowSettings& defaults = FlowSettings{});
 
 /// The [drum] keys of tumbler-flow and tumbler (docs/scenes.md).
 DrumSpec read_drum(const SceneFile& scene);

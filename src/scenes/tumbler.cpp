@@ -37,7 +37,7 @@ TumblerScene read_tumbler(const SceneFile& scene) {
     TumblerScene t;
     CoupledTumblerSetup& s = t.setup;
     s.material = read_material(scene);
-    s.flow = read_flow_settings(scene, false);
+    s.flow = read_flow_settings(scene, false, s.flow);
     s.drum = read_drum(scene);
     require_yield_pressure(scene, s.material);
     if (s.drum.cells_per_diameter < min_tumbler_cells())
