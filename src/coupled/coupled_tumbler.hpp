@@ -58,7 +58,7 @@ namespace granseg {
 
 /// The coupled drum's default dt_max (assumption C9): half the flow solver's. With the packing
 /// feedback the small-particle shares of the core and the axis carry a time error of about 0.03
-/// at 2 ms on the paper's drum (50 cells), a few thousandths at 1 ms (bench_time_step).
+/// at 2 ms on the paper's drum (50 cells), about 0.01 at 1 ms (bench_time_step; more at 100 cells).
 constexpr double kCoupledDtMax = 1e-3;  // s
 
 /// The flow settings of a coupled drum by default: the flow solver's with dt_max = kCoupledDtMax.

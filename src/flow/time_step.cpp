@@ -105,7 +105,8 @@ StepSize time_step(const FlowMesh& mesh, const FlowSettings& settings, double t,
                 ? "the compaction bound: the bed is compacted towards Phi_rcp faster than this resolution can follow"
             : bound == StepBound::outflow
                 ? "the outflow bound: a cell loses more than its mass (outflow rate " + format_number(rates.outflow) + " 1/s)"
-                : "the CFL condition";
+            : bound == StepBound::acoustic ? "the face smoothing's acoustic Courant number (acoustic_courant_max, F13)"
+                                           : "the CFL condition";
         throw InvariantError("flow: time step " + format_number(dt) + " s fell below dt_min = " + format_number(settings.dt_min) +
                              " s at t = " + format_number(t) + " s, set by " + cause + " (largest sound speed c = " +
                              format_number(c_max) + " m/s at Phi = " + format_number(Phi_at, 8) + ")");
