@@ -1,5 +1,6 @@
 #include "study/dt_study.hpp"
 
+#include "coupled/coupled_tumbler.hpp"
 #include "harness/table_provenance.hpp"
 #include "run/output.hpp"
 
@@ -45,14 +46,23 @@ std::string part_name(bool feedback) { return feedback ? "feedback" : "no feedba
 
 std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
     std::vector<Fig7Run> runs;
+    const auto add = [&](const DtGrid& g, const std::string& t, bool feedback, double dt) {
+        Fig7Run r{run_name(feedback, t, g.cells, dt), Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
+        r.packing_feedback = feedback;
+        for (const Fig7Run& earlier : runs)
+            if (earlier.name == r.name) return;
+        runs.push_back(r);
+    };
     for (const DtGrid& g : o.grids)
         for (const std::string& t : o.run.transports)
             for (bool feedback : o.feedback)
-                for (double dt : g.dt_max) {
-                    Fig7Run r{run_name(feedback, t, g.cells, dt), Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
-                    r.packing_feedback = feedback;
-                    runs.push_back(r);
-                }
+                for (double dt : g.dt_max) add(g, t, feedback, dt);
+    if (std::find(o.feedback.begin(), o.feedback.end(), true) == o.feedback.end()) return runs;
+    for (const DtGrid& g : o.grids)
+        for (const std::string& t : o.run.transports) {
+            add(g, t, true, kCoupledDtMax);
+            for (double dt : o.cost_dt_max) add(g, t, true, dt);
+        }
     return runs;
 }
 
@@ -63,10 +73,17 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
             for (bool feedback : o.feedback) {
                 std::vector<const Fig7Result*> series;  // smallest dt first (fine to coarse)
                 for (const Fig7Result& r : results)
-                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback)
+                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback &&
+                        std::find(g.dt_max.begin(), g.dt_max.end(), r.run.dt_max) != g.dt_max.end())
                         series.push_back(&r);
                 std::sort(series.begin(), series.end(),
                           [](const Fig7Result* a, const Fig7Result* b) { return a->dt_mean < b->dt_mean; });
+                // A run whose mean step is within 1 % of a finer run's adds no point to the fit.
+                series.erase(std::unique(series.begin(), series.end(),
+                                         [](const Fig7Result* fine, const Fig7Result* coarse) {
+                                             return coarse->dt_mean < 1.01 * fine->dt_mean;
+                                         }),
+                             series.end());
                 if (series.size() < 2) continue;
                 for (int q : dt_study_quantities()) {
                     if (q == kContrast && !feedback) continue;  // without feedback Phi does not follow phi_hat
@@ -152,6 +169,74 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
     md << "\ndt_max " << dts << "; t_end " << fig7_number(o.run.t_end)
        << " s, averages over t >= " << fig7_number(o.run.average_from) << " s. Written by bench_time_step.\n";
     write_generated_table(o.run.data_dir + "/time_step.md", md.str(), kDrumStudyParts);
+}
+
+std::vector<DtCost> dt_costs(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates,
+                             const DtStudyOptions& o) {
+    std::vector<DtCost> out;
+    for (const DtGrid& g : o.grids)
+        for (const std::string& t : o.run.transports) {
+            std::vector<double> steps = o.cost_dt_max;
+            steps.push_back(kCoupledDtMax);
+            std::sort(steps.begin(), steps.end());
+            steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+            for (double dt : steps) {
+                DtCost c;
+                for (const Fig7Result& r : results)
+                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback && r.run.dt_max == dt)
+                        c.run = &r;
+                if (!c.run) continue;
+                bool estimated = false;
+                for (const DtEstimate& d : estimates) {
+                    if (!d.feedback || d.cells != g.cells || d.transport != t) continue;
+                    const int q = d.e.quantity;
+                    const double v = c.run->value[q];
+                    estimated = true;
+                    c.error[q] = std::isfinite(d.error) ? v - d.e.g.f0 : std::numeric_limits<double>::quiet_NaN();
+                    c.bound[q] = std::isfinite(d.error) ? std::fabs(c.error[q]) : std::max(d.e.g.hi, v) - std::min(d.e.g.lo, v);
+                }
+                if (estimated) out.push_back(c);
+            }
+        }
+    return out;
+}
+
+void write_dt_costs(const std::vector<DtCost>& costs, const DtStudyOptions& o) {
+    static const int shown[] = {kAngle, kIndex, kCore, kAxis};
+    DataTable dat;
+    dat.comment(
+        "bench_time_step: error against cost, one row per run of the full model (feedback); transport 0 muscl, 1 "
+        "donor-cell; acoustic_share: share of the steps the acoustic bound set; NAME_error: value less its series' "
+        "limit (NaN where the series forms none), NAME_bound: |error| or the range of the series and the run");
+    std::ostringstream md;
+    md << "| transport | cells | dt_max (ms) | mean step (ms) | steps | set by the acoustic bound | CPU s";
+    for (int q : shown) md << " | " << fig7_quantities()[q].name << " error";
+    md << " |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const DtCost& c : costs) {
+        const Fig7Result& r = *c.run;
+        TableRow row{{"transport", static_cast<double>(transport_code(r.run.transport))},
+                     {"cells", static_cast<double>(r.run.cells)},
+                     {"dt_max", r.run.dt_max},
+                     {"dt_mean", r.dt_mean},
+                     {"steps", r.steps},
+                     {"acoustic_share", r.acoustic_share},
+                     {"cpu_seconds", r.cpu}};
+        md << "| " << r.run.transport << " | " << r.run.cells << " | " << fig7_number(1e3 * r.run.dt_max) << " | "
+           << fig7_number(1e3 * r.dt_mean, 3) << " | " << fig7_number(r.steps, 5) << " | "
+           << fig7_number(100 * r.acoustic_share, 3) << " % | " << fig7_number(r.cpu, 4);
+        for (int q : shown) {
+            const std::string name = fig7_quantities()[q].name;
+            row.add(name + "_error", c.error[q]).add(name + "_bound", c.bound[q]);
+            md << " | " << (std::isfinite(c.error[q]) ? fig7_number(c.error[q], 2) : "< " + dt_cell(c.bound[q], 2));
+        }
+        md << " |\n";
+        dat.row(row);
+    }
+    md << "\nErrors: the value less its series' dt → 0 limit (time_step.md), \"< x\" where the series forms no limit (its "
+          "range and the run's). t_end "
+       << fig7_number(o.run.t_end) << " s; CPU seconds of one thread. Written by bench_time_step.\n";
+    write_file_atomically(o.run.data_dir + "/time_step_cost.dat", dat.str());
+    write_generated_table(o.run.data_dir + "/time_step_cost.md", md.str(), kDrumStudyParts);
 }
 
 }  // namespace granseg::verify

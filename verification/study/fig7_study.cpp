@@ -162,6 +162,7 @@ Fig7Result run_fig7(const Fig7Run& run, const Fig7Options& o) {
     r.wall = summary.at(s, "wall_seconds"), r.cpu = summary.at(s, "cpu_seconds");
     r.steps = summary.at(s, "steps");
     r.dt_max_share = summary.at(s, "steps_dt_max") / r.steps;
+    r.acoustic_share = summary.at(s, "steps_acoustic") / r.steps;
     r.dt_mean = summary.at(s, "t_end") / r.steps;
     r.h = fig7_scene_number("drum", "diameter", DrumSpec{}.diameter) / run.cells;
     r.initial_mixture = summary.at(s, "initial_mixture"), r.packing_spread = summary.at(s, "packing_spread");

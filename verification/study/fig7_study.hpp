@@ -95,6 +95,7 @@ struct Fig7Result {
     Fig7Run run;
     double wall = 0, cpu = 0, steps = 0, dt_mean = 0, h = 0;  // s, s (all threads), -, s (t_end / steps), m
     double dt_max_share = 0;                                  // share of the steps whose dt dt_max set
+    double acoustic_share = 0;                                // and the acoustic bound (src/flow/time_step.hpp)
     std::array<double, kFig7Quantities> value{}, sampling{};  // sampling: the standard error of a time
                                                               // average, or the jitter of a value at t_end
     double initial_mixture = 0, packing_spread = 0;
