@@ -2,14 +2,19 @@
 # (blue) and with (red) packing feedback, each transport (solid: muscl, dashed: donor-cell) and grid
 # (circles: the coarser, squares: the finer); bars: sampling errors. A curve that flattens towards
 # small dt_max has reached its dt -> 0 limit; its height above that at the largest dt_max (the
-# default step) is the time error (docs/generated/time_step.md gives the fitted numbers).
+# default step) is the time error (docs/generated/time_step.md gives the fitted numbers). The last
+# panel: error against cost, the full model's shares of core (circles) and axis (squares) off their
+# dt -> 0 limits against each run's CPU seconds (docs/generated/time_step_cost.md), per grid and
+# transport (solid muscl, dashed donor-cell).
 # needs: bench_time_step
-# reads: time_step_runs.dat
+# reads: time_step_runs.dat time_step_cost.dat
 # Data: time_step_runs.dat (feedback transport cells dt_max dt_mean dt_max_share steps wall_seconds
 #       cpu_seconds, then per quantity value and _se: angle layer_mm index ring core contrast axis;
-#       transport 0 muscl, 1 donor-cell).
+#       transport 0 muscl, 1 donor-cell); time_step_cost.dat (transport cells dt_max dt_mean steps
+#       acoustic_share cpu_seconds, then per quantity _error and _bound: angle index core axis).
 # Usage (from the Makefile): gnuplot -e "benchdir='build/bench-data'; outfile='x.png'" figures/bench_time_step.gp
 runs = benchdir.'/time_step_runs.dat'
+cost = benchdir.'/time_step_cost.dat'
 width = 1800; height = 1100; fontsize = 11
 load 'figures/png_terminal.gnuplot'
 set output outfile
@@ -33,4 +38,16 @@ do for [q = 1:7] {
     plot for [s = 0:7] runs u (sel(s/4, (s/2)%2, s%2 == 0 ? n_lo : n_hi, 1e3 * $4)):(column(c)):(column(c + 1)) \
          w yerrorlines lw 2 dt 1+(s/2)%2 pt (s%2 == 0 ? 7 : 5) lc rgb (s/4 == 0 ? "#1f77b4" : "#d62728")
 }
+set title "full model: share off its dt -> 0 limit against cost"
+set xlabel "CPU seconds of the run"
+set ylabel "|share - limit|"
+set logscale xy 10
+set key top right
+grid(tr, n, v) = ($1 == tr && $2 == n && v > 0) ? v : 1/0
+# series s = 2 tr + g: transport (solid muscl, dashed donor-cell), grid (red/orange coarser, purple/brown finer)
+plot for [s = 0:3] cost u (grid(s/2, s%2 == 0 ? n_lo : n_hi, $7)):13 w lp lw 2 dt 1+s/2 pt 7 \
+         lc rgb (s%2 == 0 ? "#d62728" : "#9467bd") t (s/2 == 0 ? sprintf("core, %d cells", s%2 == 0 ? n_lo : n_hi) : ""), \
+     for [s = 0:3] cost u (grid(s/2, s%2 == 0 ? n_lo : n_hi, $7)):15 w lp lw 2 dt 1+s/2 pt 5 \
+         lc rgb (s%2 == 0 ? "#ff7f0e" : "#8c564b") t (s/2 == 0 ? sprintf("axis, %d cells", s%2 == 0 ? n_lo : n_hi) : ""), \
+     0.01 w l dt 3 lc rgb "black" t "target 0.01"
 unset multiplot

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace granseg::verify {
 
@@ -108,7 +109,15 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
         "standard error of the mean over t >= " +
         fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " + fig7_number(o.run.jitter_window) +
         " s)");
-    for (const Fig7Result& r : results) {
+    // Per series largest dt_max first, so that a figure's lines run along dt_max.
+    std::vector<const Fig7Result*> sorted;
+    for (const Fig7Result& r : results) sorted.push_back(&r);
+    std::stable_sort(sorted.begin(), sorted.end(), [](const Fig7Result* a, const Fig7Result* b) {
+        return std::make_tuple(a->run.cells, a->run.transport, a->run.packing_feedback, -a->run.dt_max) <
+               std::make_tuple(b->run.cells, b->run.transport, b->run.packing_feedback, -b->run.dt_max);
+    });
+    for (const Fig7Result* run : sorted) {
+        const Fig7Result& r = *run;
         TableRow row{{"feedback", r.run.packing_feedback ? 1.0 : 0.0},
                      {"transport", static_cast<double>(transport_code(r.run.transport))},
                      {"cells", static_cast<double>(r.run.cells)},
