@@ -105,9 +105,8 @@ int main(int argc, char** argv) {
         const Fig7Result& r = results[j];
         const std::lock_guard<std::mutex> lock(print);
         std::printf(
-            "run %-34s %8.1f s wall, %7.0f steps (%.3f set by dt_max, %.3f by the acoustic bound): angle %.3f deg, layer %.2f "
-            "mm, "
-            "index %.4f, ring %.4f, core %.4f, contrast %.4f, axis %.4f\n",
+            "run %-34s %8.1f s wall, %7.0f steps (%.3f set by dt_max, %.3f by the acoustic bound): "
+            "angle %.3f deg, layer %.2f mm, index %.4f, ring %.4f, core %.4f, contrast %.4f, axis %.4f\n",
             r.run.name.c_str(), r.wall, r.steps, r.dt_max_share, r.acoustic_share, r.value[kAngle], r.value[kLayer],
             r.value[kIndex], r.value[kRing], r.value[kCore], r.value[kContrast], r.value[kAxis]);
         std::fflush(stdout);
