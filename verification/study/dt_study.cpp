@@ -36,6 +36,15 @@ std::string error_cell(const DtEstimate& d, int digits) {
 
 int transport_code(const std::string& t) { return t == "muscl" ? 0 : 1; }
 
+/// The cost runs' dt_max: --cost-dt-max and the coupled drum's default step, ascending, once each.
+std::vector<double> cost_steps(const DtStudyOptions& o) {
+    std::vector<double> steps = o.cost_dt_max;
+    steps.push_back(kCoupledDtMax);
+    std::sort(steps.begin(), steps.end());
+    steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+    return steps;
+}
+
 }  // namespace
 
 const std::vector<int>& dt_study_quantities() {
@@ -60,10 +69,8 @@ std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
                 for (double dt : g.dt_max) add(g, t, feedback, dt);
     if (std::find(o.feedback.begin(), o.feedback.end(), true) == o.feedback.end()) return runs;
     for (const DtGrid& g : o.grids)
-        for (const std::string& t : o.run.transports) {
-            add(g, t, true, kCoupledDtMax);
-            for (double dt : o.cost_dt_max) add(g, t, true, dt);
-        }
+        for (const std::string& t : o.run.transports)
+            for (double dt : cost_steps(o)) add(g, t, true, dt);
     return runs;
 }
 
@@ -185,11 +192,7 @@ std::vector<DtCost> dt_costs(const std::vector<Fig7Result>& results, const std::
     std::vector<DtCost> out;
     for (const DtGrid& g : o.grids)
         for (const std::string& t : o.run.transports) {
-            std::vector<double> steps = o.cost_dt_max;
-            steps.push_back(kCoupledDtMax);
-            std::sort(steps.begin(), steps.end());
-            steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-            for (double dt : steps) {
+            for (double dt : cost_steps(o)) {
                 DtCost c;
                 for (const Fig7Result& r : results)
                     if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback && r.run.dt_max == dt)
