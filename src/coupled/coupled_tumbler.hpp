@@ -56,15 +56,20 @@
 
 namespace granseg {
 
-/// The coupled drum's default dt_max (assumption C9): half the flow solver's. With the packing
-/// feedback the small-particle shares of the core and the axis carry a time error of about 0.03
-/// at 2 ms on the paper's drum (50 cells), about 0.01 at 1 ms (bench_time_step; more at 100 cells).
-constexpr double kCoupledDtMax = 1e-3;  // s
+/// The coupled drum's default step (assumption C9): dt_max half the flow solver's, and at most two
+/// acoustic times h/c of a cell (the flow solver's own bound allows five). With the packing
+/// feedback the small-particle shares of the core and the axis carry a time error that follows the
+/// acoustic Courant number c dt/h: about 0.03 at five (50 cells at 2 ms, 100 cells at 1 ms), below
+/// 0.01 at two (bench_time_step, sect4.2_tumbler.md "Time step").
+constexpr double kCoupledDtMax = 1e-3;            // s
+constexpr double kCoupledAcousticCourantMax = 2;  // dt * max_axis c/h_axis <= this
 
-/// The flow settings of a coupled drum by default: the flow solver's with dt_max = kCoupledDtMax.
+/// The flow settings of a coupled drum by default: the flow solver's with dt_max = kCoupledDtMax
+/// and acoustic_courant_max = kCoupledAcousticCourantMax.
 inline FlowSettings coupled_flow_settings() {
     FlowSettings f;
     f.dt_max = kCoupledDtMax;
+    f.acoustic_courant_max = kCoupledAcousticCourantMax;
     return f;
 }
 

@@ -15,11 +15,14 @@ namespace granseg::verify {
 
 namespace {
 
-/// NAME of a run: PART_TRANSPORT_nCELLS_dtDT ("feedback_muscl_n50_dt0.002").
+/// NAME of a run: PART_TRANSPORT_nCELLS_STEP, STEP dtDT or "default" ("feedback_muscl_n50_dt0.002").
+std::string run_name(bool feedback, const std::string& transport, int cells, const std::string& step) {
+    return std::string(feedback ? "feedback" : "nofeedback") + "_" + transport + "_n" + std::to_string(cells) + "_" + step;
+}
 std::string run_name(bool feedback, const std::string& transport, int cells, double dt) {
-    char s[96];
-    std::snprintf(s, sizeof s, "%s_%s_n%d_dt%g", feedback ? "feedback" : "nofeedback", transport.c_str(), cells, dt);
-    return s;
+    char step[40];
+    std::snprintf(step, sizeof step, "dt%g", dt);
+    return run_name(feedback, transport, cells, step);
 }
 
 /// A table cell: the number, or a dash where it is not defined.
@@ -36,14 +39,17 @@ std::string error_cell(const DtEstimate& d, int digits) {
 
 int transport_code(const std::string& t) { return t == "muscl" ? 0 : 1; }
 
-/// The cost runs' dt_max: --cost-dt-max and the coupled drum's default step, ascending, once each.
+/// The cost runs' dt_max (--cost-dt-max), ascending, once each.
 std::vector<double> cost_steps(const DtStudyOptions& o) {
     std::vector<double> steps = o.cost_dt_max;
-    steps.push_back(kCoupledDtMax);
     std::sort(steps.begin(), steps.end());
     steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
     return steps;
 }
+
+/// Whether `r` is a run at the coupled drum's default step (its scene's dt_max and acoustic
+/// Courant number), not one of a series.
+bool at_default_step(const Fig7Result& r) { return std::isnan(r.run.acoustic_courant_max); }
 
 }  // namespace
 
@@ -56,9 +62,15 @@ std::string part_name(bool feedback) { return feedback ? "feedback" : "no feedba
 
 std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
     std::vector<Fig7Run> runs;
-    const auto add = [&](const DtGrid& g, const std::string& t, bool feedback, double dt) {
+    // A series run and a cost run: dt_max as given, at the flow solver's acoustic Courant number
+    // (the coupled drum's smaller default would set the larger steps); a default run: the scene's.
+    const auto add = [&](const DtGrid& g, const std::string& t, bool feedback, double dt, bool default_step) {
         Fig7Run r{run_name(feedback, t, g.cells, dt), Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
         r.packing_feedback = feedback;
+        if (default_step)
+            r.name = run_name(feedback, t, g.cells, "default");
+        else
+            r.acoustic_courant_max = FlowSettings{}.acoustic_courant_max;
         for (const Fig7Run& earlier : runs)
             if (earlier.name == r.name) return;
         runs.push_back(r);
@@ -66,11 +78,13 @@ std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
     for (const DtGrid& g : o.grids)
         for (const std::string& t : o.run.transports)
             for (bool feedback : o.feedback)
-                for (double dt : g.dt_max) add(g, t, feedback, dt);
+                for (double dt : g.dt_max) add(g, t, feedback, dt, false);
     if (std::find(o.feedback.begin(), o.feedback.end(), true) == o.feedback.end()) return runs;
     for (const DtGrid& g : o.grids)
-        for (const std::string& t : o.run.transports)
-            for (double dt : cost_steps(o)) add(g, t, true, dt);
+        for (const std::string& t : o.run.transports) {
+            for (double dt : cost_steps(o)) add(g, t, true, dt, false);
+            add(g, t, true, kCoupledDtMax, true);
+        }
     return runs;
 }
 
@@ -82,7 +96,7 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
                 std::vector<const Fig7Result*> series;  // smallest dt first (fine to coarse)
                 for (const Fig7Result& r : results)
                     if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback == feedback &&
-                        std::find(g.dt_max.begin(), g.dt_max.end(), r.run.dt_max) != g.dt_max.end())
+                        !at_default_step(r) && std::find(g.dt_max.begin(), g.dt_max.end(), r.run.dt_max) != g.dt_max.end())
                         series.push_back(&r);
                 std::sort(series.begin(), series.end(),
                           [](const Fig7Result* a, const Fig7Result* b) { return a->dt_mean < b->dt_mean; });
@@ -112,13 +126,15 @@ std::vector<DtEstimate> analyse_dt(const std::vector<Fig7Result>& results, const
 void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates, const DtStudyOptions& o) {
     DataTable runs;
     runs.comment(
-        "bench_time_step: one row per run; transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
+        "bench_time_step: one row per run of a series or of the cost runs (the default step's: time_step_cost.dat); "
+        "transport 0 muscl, 1 donor-cell; se: sampling errors (time averages: "
         "standard error of the mean over t >= " +
         fig7_number(o.run.average_from) + " s; values at t_end: jitter over the last " + fig7_number(o.run.jitter_window) +
         " s)");
     // Per series largest dt_max first, so that a figure's lines run along dt_max.
     std::vector<const Fig7Result*> sorted;
-    for (const Fig7Result& r : results) sorted.push_back(&r);
+    for (const Fig7Result& r : results)
+        if (!at_default_step(r)) sorted.push_back(&r);
     std::stable_sort(sorted.begin(), sorted.end(), [](const Fig7Result* a, const Fig7Result* b) {
         return std::make_tuple(a->run.cells, a->run.transport, a->run.packing_feedback, -a->run.dt_max) <
                std::make_tuple(b->run.cells, b->run.transport, b->run.packing_feedback, -b->run.dt_max);
@@ -192,12 +208,17 @@ std::vector<DtCost> dt_costs(const std::vector<Fig7Result>& results, const std::
     std::vector<DtCost> out;
     for (const DtGrid& g : o.grids)
         for (const std::string& t : o.run.transports) {
-            for (double dt : cost_steps(o)) {
-                DtCost c;
+            std::vector<const Fig7Result*> runs;  // the cost runs by dt_max, then the default step's
+            for (double dt : cost_steps(o))
                 for (const Fig7Result& r : results)
-                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback && r.run.dt_max == dt)
-                        c.run = &r;
-                if (!c.run) continue;
+                    if (r.run.cells == g.cells && r.run.transport == t && r.run.packing_feedback && r.run.dt_max == dt &&
+                        !at_default_step(r))
+                        runs.push_back(&r);
+            for (const Fig7Result& r : results)
+                if (r.run.cells == g.cells && r.run.transport == t && at_default_step(r)) runs.push_back(&r);
+            for (const Fig7Result* run : runs) {
+                DtCost c;
+                c.run = run;
                 bool estimated = false;
                 for (const DtEstimate& d : estimates) {
                     if (!d.feedback || d.cells != g.cells || d.transport != t) continue;
@@ -219,13 +240,17 @@ void write_dt_costs(const std::vector<DtCost>& costs, const DtStudyOptions& o) {
     dat.comment(
         "bench_time_step: error against cost, one row per run of the full model (feedback); transport 0 muscl, 1 "
         "donor-cell; acoustic_share: share of the steps the acoustic bound set; NAME_error: value less its series' "
-        "limit (NaN where the series forms none), NAME_bound: |error| or the range of the series and the run");
+        "limit (NaN where the series forms none), NAME_bound: |error| or the range of the series and the run; "
+        "acoustic_courant_max: the run's bound on c dt/h; default_step 1: the coupled drum's default step");
     std::ostringstream md;
-    md << "| transport | cells | dt_max (ms) | mean step (ms) | steps | set by the acoustic bound | CPU s";
+    md << "| transport | cells | dt_max (ms) | acoustic Courant number at most | mean step (ms) | steps | set by the acoustic "
+          "bound | CPU s";
     for (int q : shown) md << " | " << fig7_quantities()[q].name << " error";
-    md << " |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+    md << " |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const DtCost& c : costs) {
         const Fig7Result& r = *c.run;
+        const bool default_step = at_default_step(r);
+        const double courant = default_step ? kCoupledAcousticCourantMax : r.run.acoustic_courant_max;
         TableRow row{{"transport", static_cast<double>(transport_code(r.run.transport))},
                      {"cells", static_cast<double>(r.run.cells)},
                      {"dt_max", r.run.dt_max},
@@ -234,15 +259,16 @@ void write_dt_costs(const std::vector<DtCost>& costs, const DtStudyOptions& o) {
                      {"acoustic_share", r.acoustic_share},
                      {"cpu_seconds", r.cpu}};
         md << "| " << r.run.transport << " | " << r.run.cells << " | " << fig7_number(1e3 * r.run.dt_max) << " | "
-           << fig7_number(1e3 * r.dt_mean, 3) << " | " << fig7_number(r.steps, 5) << " | "
-           << fig7_number(100 * r.acoustic_share, 3) << " % | " << fig7_number(r.cpu, 4);
+           << fig7_number(courant) << (default_step ? " (the default step)" : "") << " | " << fig7_number(1e3 * r.dt_mean, 3)
+           << " | " << fig7_number(r.steps, 5) << " | " << fig7_number(100 * r.acoustic_share, 3) << " % | "
+           << fig7_number(r.cpu, 4);
         for (int q : shown) {
             const std::string name = fig7_quantities()[q].name;
             row.add(name + "_error", c.error[q]).add(name + "_bound", c.bound[q]);
             md << " | " << (std::isfinite(c.error[q]) ? fig7_number(c.error[q], 2) : "< " + dt_cell(c.bound[q], 2));
         }
         md << " |\n";
-        dat.row(row);
+        dat.row(row.add("acoustic_courant_max", courant).add("default_step", default_step ? 1.0 : 0.0));
     }
     md << "\nErrors: the value less its series' dt → 0 limit (time_step.md), \"< x\" where the series forms no limit (its "
           "range and the run's). t_end "

@@ -16,10 +16,12 @@
 // is within 1 % of a finer run's adds no point: a bound, not dt_max, set its steps (the acoustic
 // bound of the semi-implicit step, src/flow/time_step.hpp, caps the step near 0.9 ms at 100 cells).
 //
+// The series and the cost runs set dt_max at the flow solver's acoustic Courant number (five): at the
+// coupled drum's own (two, C9) the larger dt_max would all take one step.
 // Error against cost: the full model (feedback) at each --cost-dt-max and at the coupled drum's
-// default step (kCoupledDtMax) on every grid and transport, each run's time error the value less
-// its grid's series limit, beside its CPU seconds; the check of bench_time_step is the error at
-// the default step.
+// default step (its scene's dt_max and acoustic Courant number: run NAME ..._default) on every grid
+// and transport, each run's time error the value less its grid's series limit, beside its CPU
+// seconds; the check of bench_time_step is the error at the default step.
 #pragma once
 
 #include "study/fig7_report.hpp"
@@ -48,7 +50,7 @@ struct DtStudyOptions {
 const std::vector<int>& dt_study_quantities();
 
 /// The runs, grid by grid: per transport, part and dt_max (largest first), then the cost runs not
-/// among them (the default step's always).
+/// among them and the run at the default step.
 std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& options);
 
 /// One series: a part, transport and grid, and a quantity.
@@ -73,8 +75,8 @@ struct DtCost {
     std::array<double, kFig7Quantities> error{}, bound{};
 };
 
-/// The cost runs (--cost-dt-max and the default step), grid by grid and transport, largest dt_max
-/// last; runs whose series has no estimate are left out.
+/// The cost runs (--cost-dt-max, ascending, then the default step), grid by grid and transport;
+/// runs whose series has no estimate are left out.
 std::vector<DtCost> dt_costs(const std::vector<Fig7Result>& results, const std::vector<DtEstimate>& estimates,
                              const DtStudyOptions& options);
 

@@ -58,6 +58,7 @@ std::string scene_text(const Fig7Run& run, const Fig7Options& o) {
     else
         flow.insert_or_assign("transport", run.transport);
     flow.insert_or_assign("dt_max", run.dt_max);
+    if (!std::isnan(run.acoustic_courant_max)) flow.insert_or_assign("acoustic_courant_max", run.acoustic_courant_max);
     if (run.kind == Fig7Kind::floor) flow.insert_or_assign("T_floor", o.T_floor_low);
     if (!run.packing_feedback) section("coupling").insert_or_assign("packing_feedback", false);
     if (!std::isnan(run.S)) section("segregation").insert_or_assign("S", run.S);

@@ -65,12 +65,13 @@ struct Fig7Run {
     Fig7Kind kind = Fig7Kind::grid;
     bool explicit_steps = false;
     int cells = 0;
-    double dt_factor = 1.0;        // dt_max relative to the grid's (Fig7Options::dt_max)
-    std::string transport;         // [flow] transport ("" for the explicit time stepping)
-    double dt_max = 0;             // s
-    bool packing_feedback = true;  // [coupling] packing_feedback
-    double S = NAN;                // [segregation] S; NaN: the scene's
-    double min_shear_rate = 0;     // [segregation] diagnostic_min_shear_rate, 1/s (0: off, the scene's)
+    double dt_factor = 1.0;             // dt_max relative to the grid's (Fig7Options::dt_max)
+    std::string transport;              // [flow] transport ("" for the explicit time stepping)
+    double dt_max = 0;                  // s
+    bool packing_feedback = true;       // [coupling] packing_feedback
+    double S = NAN;                     // [segregation] S; NaN: the scene's
+    double min_shear_rate = 0;          // [segregation] diagnostic_min_shear_rate, 1/s (0: off, the scene's)
+    double acoustic_courant_max = NAN;  // [flow] acoustic_courant_max; NaN: the scene's (the coupled drum's default)
 };
 
 /// The Fig. 7 quantities, in the order of every table: name, unit, whether it is a time average
