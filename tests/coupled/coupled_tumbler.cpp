@@ -2,9 +2,10 @@
 // phi_hat of 1/2 carried exactly, its Courant number), the drum's fill fraction and angle of
 // repose, a few coupled steps with S = 0, a segregating drum with either bulk transport, the
 // segregation sub-step in every flow step, the flow without packing feedback as the flow alone, a
-// passive tracer riding in a segregating drum, a drum of one phase only, and the diagnostic that
-// switches the segregation off below a shear rate.
+// passive tracer riding in a segregating drum, a drum of one phase only, the diagnostic that
+// switches the segregation off below a shear rate, and the default step's acoustic bound.
 #include "coupled/coupled_tumbler.hpp"
+#include "closures/closures.hpp"
 #include "coupled/coupled_run.hpp"
 #include "direction/segregation_direction.hpp"
 #include "drum/bed.hpp"
@@ -17,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace granseg;
 namespace tt = boost::test_tools;
@@ -295,6 +297,43 @@ BOOST_AUTO_TEST_CASE(a_moderate_shear_rate_threshold_switches_only_the_creeping_
     long not_half = 0;
     for (std::size_t c = 0; c < g.cells(); ++c) not_half += g.is_inside(c) && tumbler.phi()[c] != 0.5 * tumbler.flow().Phi()[c];
     BOOST_TEST(not_half > 0);
+}
+
+BOOST_AUTO_TEST_CASE(the_default_step_is_at_most_two_acoustic_times_of_a_cell) {
+    // At 60 cells per diameter two acoustic times h/c of the packed bed are shorter than dt_max
+    // (1 ms), so the coupled drum's own Courant number (kCoupledAcousticCourantMax, C9) sets the
+    // step; at the flow solver's five acoustic times the same drum takes dt_max. S = 0 keeps
+    // phi_hat = 1/2, and with it Phi_rcp and Phi_co, in every cell.
+    struct LastStep {
+        double dt, dt_acoustic;  // the step taken, and two h/c at its start
+        StepBound bound;
+    };
+    auto run = [](const FlowSettings& flow) {
+        CoupledTumblerSetup setup;
+        setup.drum.cells_per_diameter = 60;
+        setup.S = 0.0;
+        setup.flow = flow;
+        CoupledTumbler tumbler(setup);
+        for (int n = 0; n < 40; ++n) tumbler.step();
+        const FlowSolver& f = tumbler.flow();
+        const Material& m = setup.material;
+        const double rcp = m.packing.Phi_rcp(0.5), co = m.packing.Phi_co(0.5);
+        double c_max = 0.0;  // the largest sound speed at the start of the last step, from which its dt is set
+        for (std::size_t c = 0; c < tumbler.grid().cells(); ++c)
+            if (tumbler.grid().is_inside(c))
+                c_max = std::max(c_max, std::sqrt(evaluate_closures_at(m, f.Phi()[c], f.T()[c], rcp, co).c2));
+        tumbler.step();
+        return LastStep{f.last_dt(), kCoupledAcousticCourantMax * tumbler.grid().h[0] / c_max, f.last_bound()};
+    };
+    FlowSettings five = coupled_flow_settings();
+    five.acoustic_courant_max = FlowSettings{}.acoustic_courant_max;
+    const LastStep coupled = run(coupled_flow_settings()), flow_solver = run(five);
+    BOOST_TEST(coupled_flow_settings().acoustic_courant_max == kCoupledAcousticCourantMax);
+    BOOST_TEST(std::string(step_bound_name(coupled.bound)) == "acoustic");
+    BOOST_TEST(coupled.dt <= coupled.dt_acoustic * (1.0 + 1e-9));  // the same sound speeds, up to round-off
+    BOOST_TEST(coupled.dt < 0.9 * kCoupledDtMax);
+    BOOST_TEST(std::string(step_bound_name(flow_solver.bound)) == "dt_max");
+    BOOST_TEST(flow_solver.dt == kCoupledDtMax);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
