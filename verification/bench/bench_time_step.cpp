@@ -10,7 +10,7 @@
 // NAME.toml and its files NAME/); figures/bench_time_step.gp plots time_step.dat.
 //
 // Run: build/bench/bench_time_step [--data DIR] [options]    (--help lists them)
-//   the default is the whole study (about seven CPU-hours, two runs side by side); a test of
+//   the default is the whole study (about eight CPU-hours, two runs side by side); a test of
 //   everything in a few minutes:
 //   --grids "26:2e-3,1e-3" --transports donor-cell --t-end 2 --average-from 1 --jitter-window 0.5
 #include "core/error.hpp"
