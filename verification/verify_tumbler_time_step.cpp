@@ -5,7 +5,9 @@
 // packing feedback, develops within those seconds; every run goes through the scene's reader and
 // time loop.
 //   Runs: packing feedback on and off, each at the coupled drum's default dt_max (kCoupledDtMax)
-//   and at half of it.
+//   and at half of it. On this grid two acoustic times h/c (kCoupledAcousticCourantMax) are longer
+//   than dt_max, so dt_max sets the default step (on the paper's drum finer than about 40 cells
+//   the acoustic bound does: bench_time_step measures that step).
 //   The whole time error: for a scheme of order p the error of q at dt is
 //   (q(dt) - q(dt/2)) / (1 - 2^-p); with p = 1, the coupled step's formal order (Lie splitting;
 //   the shares converge at about second order here and in bench_time_step), the estimate is
