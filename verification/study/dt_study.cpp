@@ -47,11 +47,9 @@ std::vector<double> cost_steps(const DtStudyOptions& o) {
     return steps;
 }
 
-/// Whether `r` is a run at the coupled drum's default step (its scene's dt_max and acoustic
-/// Courant number), not one of a series.
-bool at_default_step(const Fig7Result& r) { return std::isnan(r.run.acoustic_courant_max); }
-
 }  // namespace
+
+bool at_default_step(const Fig7Result& r) { return std::isnan(r.run.acoustic_courant_max); }
 
 const std::vector<int>& dt_study_quantities() {
     static const std::vector<int> q{kAngle, kLayer, kIndex, kRing, kCore, kContrast, kAxis};
@@ -65,12 +63,10 @@ std::vector<Fig7Run> plan_dt_runs(const DtStudyOptions& o) {
     // A series run and a cost run: dt_max as given, at the flow solver's acoustic Courant number
     // (the coupled drum's smaller default would set the larger steps); a default run: the scene's.
     const auto add = [&](const DtGrid& g, const std::string& t, bool feedback, double dt, bool default_step) {
-        Fig7Run r{run_name(feedback, t, g.cells, dt), Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
+        const std::string name = default_step ? run_name(feedback, t, g.cells, "default") : run_name(feedback, t, g.cells, dt);
+        Fig7Run r{name, Fig7Kind::dt, false, g.cells, dt / g.dt_max.front(), t, dt};
         r.packing_feedback = feedback;
-        if (default_step)
-            r.name = run_name(feedback, t, g.cells, "default");
-        else
-            r.acoustic_courant_max = FlowSettings{}.acoustic_courant_max;
+        if (!default_step) r.acoustic_courant_max = FlowSettings{}.acoustic_courant_max;
         for (const Fig7Run& earlier : runs)
             if (earlier.name == r.name) return;
         runs.push_back(r);

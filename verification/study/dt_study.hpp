@@ -89,6 +89,10 @@ void write_dt_study(const std::vector<Fig7Result>& results, const std::vector<Dt
 /// acoustic bound set, CPU seconds and the time errors of the angle, index, core and axis.
 void write_dt_costs(const std::vector<DtCost>& costs, const DtStudyOptions& options);
 
+/// Whether `r` is the run at the coupled drum's default step (its scene's dt_max and acoustic
+/// Courant number), not a series or cost run.
+bool at_default_step(const Fig7Result& r);
+
 /// "no feedback" or "feedback".
 std::string part_name(bool feedback);
 
