@@ -59,7 +59,7 @@ namespace granseg {
 /// The coupled drum's default step (assumption C9): dt_max half the flow solver's, and at most two
 /// acoustic times h/c of a cell (the flow solver's own bound allows five). With the packing
 /// feedback the small-particle shares of the core and the axis carry a time error that follows the
-/// acoustic Courant number c dt/h: about 0.03 at five (50 cells at 2 ms, 100 cells at 1 ms), below
+/// acoustic Courant number c dt/h: 0.015 to 0.03 at five (50 cells at 2 ms, 100 cells at 1 ms), below
 /// 0.01 at two (bench_time_step, sect4.2_tumbler.md "Time step").
 constexpr double kCoupledDtMax = 1e-3;            // s
 constexpr double kCoupledAcousticCourantMax = 2;  // dt * max_axis c/h_axis <= this
