@@ -56,9 +56,9 @@ CLI        := $(BUILD)/granseg
 VERIFY_BIN := $(patsubst verification/%.cpp,$(BUILD)/verification/%,$(VERIFY_SRC))
 BENCH_BIN  := $(patsubst verification/bench/%.cpp,$(BUILD)/bench/%,$(BENCH_SRC))
 TEST_BIN   := $(BUILD)/tests/unit_tests
-# The longest programs first (mk/schedule.mk: the last to finish are short ones).
-VERIFY_FIRST := verify_flow_rotation verify_flow_order verify_flow_tumbler verify_segregation_stress \
-                verify_tumbler verify_flow_incline
+# The longest programs first, longest first (mk/schedule.mk: the last to finish are short ones).
+VERIFY_FIRST := verify_tumbler verify_flow_rotation verify_flow_tumbler verify_flow_order verify_tumbler_time_step \
+                verify_drum_shapes verify_flow_incline verify_segregation_stress
 VERIFY_NAMES := $(filter $(notdir $(VERIFY_BIN)),$(VERIFY_FIRST)) $(filter-out $(VERIFY_FIRST),$(notdir $(VERIFY_BIN)))
 FIG_GP       := $(sort $(wildcard figures/fig*.gp))
 FIG_PNG      := $(FIG_GP:figures/%.gp=$(BUILD)/figures/%.png)
