@@ -12,7 +12,8 @@
 //   - the dynamic angle of repose (mean surface angle over 10..25 s) is not below the model's
 //     friction angle atan(mu) = atan(sqrt(2 eta0 eps0/3)) less the coarse grid's error of the
 //     critical angle (verify_flow_incline: 0.7 degrees at 16 cells per layer depth; 1 degree here).
-// Both modes run the same drum with the same checks (the semi-implicit one at its own dt, 1 ms).
+// Both modes run the same drum with the same checks (the semi-implicit one at its own dt_max, 2 ms:
+// 12,500 steps).
 // Writes DIR/flow_tumbler/{fields_lab,fields_drum,history,summary}.dat for figures/fig_flow_tumbler.gp.
 //
 // Run: build/verification/verify_flow_tumbler [--data DIR]
