@@ -42,9 +42,9 @@
 //       update without mass flux), the force part A of that change;
 //   viscosity: implicit viscosity (as in the explicit step): u*;
 //   pressure_faces: face predictor U*, donors, coupling K and explicit mass change; after the
-//       solve the corrected faces U, M = Phi_d U, the dust cap, Phi after the step, the fluxes
-//       of momentum and Phi T; again (at most 4 solves) while the pressure reversed faces onto
-//       a cell holding clearly less; then the outflow and compaction bounds checked on these
+//       solve the corrected faces U, M = Phi_d U, the faces the pressure reversed onto a cell
+//       holding clearly less marked, the dust cap, Phi after the step, the fluxes of momentum and
+//       Phi T; again (at most 4 solves) while faces were marked; then the outflow and compaction bounds checked on these
 //       fluxes (the reconstruction's face values, transport = muscl, are timed as transport);
 //   pressure_solve: the Newton solve for the pressure increments dp (flow/pressure/pressure_solver.hpp);
 //   repeat: a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the
@@ -254,8 +254,8 @@ private:
     /// pressure_solve: the Newton solve for dp_ (counted; `repeat`: dp_ solved this step's equation already);
     /// whether it converged.
     bool solve_pressure(bool repeat);
-    /// pressure_faces: corrected faces, dust cap, Phi after the step and the fluxes; returns how many faces
-    /// the pressure reversed (marked for the smaller donor).
+    /// pressure_faces: corrected faces, the reversed ones marked (before the dust cap), dust cap, Phi after
+    /// the step and the fluxes; returns how many faces the pressure reversed (marked for the smaller donor).
     long corrected_fluxes(double dt);
     /// repeat: restores the state at t^n and halves dt; throws InvariantError below dt_min.
     StepSize restart_with_half_dt(StepSize size);

@@ -128,16 +128,18 @@ bool FlowSolver::solve_pressure(bool repeat) {
 
 long FlowSolver::corrected_fluxes(double dt) {
     Stopwatch watch(timers_, FlowStage::pressure_faces);
-    for (int a = 0; a < 3; ++a)
-        if (mesh_.active[a]) corrected_face_velocities(mesh_, a, dt, state_, closures_, pressure_[a], dp_, faces_[a]);
-    cap_dust_outflow(mesh_, dt, state_, closures_, dust_scale_, faces_);
-    volume_fraction_after(mesh_, dt, state_.Phi, faces_, Phi_after_);
+    // Reversed faces are marked before the dust cap: a face the pressure reversed onto an empty
+    // cell carries nothing once capped, yet the pressure equation counted its old donor.
     long reversed = 0;
     for (int a = 0; a < 3; ++a)
         if (mesh_.active[a]) {
-            semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, Phi_after_, faces_[a]);
+            corrected_face_velocities(mesh_, a, dt, state_, closures_, pressure_[a], dp_, faces_[a]);
             reversed += mark_reversed_faces(mesh_, a, faces_[a], pressure_[a]);
         }
+    cap_dust_outflow(mesh_, dt, state_, closures_, dust_scale_, faces_);
+    volume_fraction_after(mesh_, dt, state_.Phi, faces_, Phi_after_);
+    for (int a = 0; a < 3; ++a)
+        if (mesh_.active[a]) semi_implicit_face_fluxes(mesh_, a, state_, pressure_[a], dp_, Phi_after_, faces_[a]);
     return reversed;
 }
 
