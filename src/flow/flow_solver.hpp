@@ -44,8 +44,9 @@
 //   pressure_faces: face predictor U*, donors, coupling K and explicit mass change; after the
 //       solve the corrected faces U, M = Phi_d U, the faces the pressure reversed onto a cell
 //       holding clearly less marked, the dust cap, Phi after the step, the fluxes of momentum and
-//       Phi T; again (at most 4 solves) while faces were marked; then the outflow and compaction bounds checked on these
-//       fluxes (the reconstruction's face values, transport = muscl, are timed as transport);
+//       Phi T; again (at most 4 solves) while faces were marked; then the outflow and compaction
+//       bounds checked on these fluxes (the reconstruction's face values, transport = muscl, are
+//       timed as transport);
 //   pressure_solve: the Newton solve for the pressure increments dp (flow/pressure/pressure_solver.hpp);
 //   repeat: a broken bound: Phi, Phi u, u, Phi T and dp back to t^n, no reversed marks, half the
 //       dt, again from predictor;
