@@ -126,7 +126,9 @@ void face_donors(const FlowMesh& mesh, const FlowSettings& settings, int axis, d
 void explicit_mass_change(const FlowMesh& mesh, double dt, const PressureFaces& pf, std::vector<double>& change);
 
 /// Marks the faces whose mass flux leaves a cell that gives the face clearly less than the donor it
-/// was computed with (the pressure reversed the flow there); returns how many it marked.
+/// was computed with (the pressure reversed the flow there); returns how many it marked. Call it on
+/// the corrected fluxes before cap_dust_outflow: a face reversed onto an empty cell has no flux after
+/// the cap and would go unmarked.
 long mark_reversed_faces(const FlowMesh& mesh, int axis, const AxisFaces& faces, AxisPressureFaces& pf);
 
 /// The smoothing time tau of a face of cell size h whose larger sound speed is c: the acoustic time
